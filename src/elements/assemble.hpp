@@ -1,0 +1,41 @@
+// Sums every force on every body: force elements (bushings, creases), loads, gravity,
+// drives and contact. Optionally also the exact Jacobian of the generalized forces.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "model/model.hpp"
+#include "model/state.hpp"
+
+namespace finseg {
+
+/// Resultant on each body (about its centroid, world frame) plus the potential energy.
+struct BodyForces {
+  std::vector<Vec3> f_W;
+  std::vector<Vec3> tau_W;
+  double potential_energy = 0;  ///< elastic + gravity + gauge springs + contact, J
+};
+
+/// d(generalized force)/d(pose perturbation) and d(...)/d(velocity), both num_dofs square.
+/// Pose perturbation of a free body: p_W += dp, R_WB = exp([dphi]x) R_WB (world frame).
+struct ForceJacobian {
+  Eigen::SparseMatrix<double> dq;
+  Eigen::SparseMatrix<double> dv;
+};
+
+/// Evaluates all forces at `state`; fills `jac` too when it is not null.
+void compute_forces(const Model& model, const State& state, BodyForces& out,
+                    ForceJacobian* jac = nullptr);
+
+/// Generalized force vector (num_dofs) of the free bodies, from per-body resultants.
+Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces);
+
+/// Gauge force of drive d: force the gauge spring applies to the structure, world frame, N.
+Vec3 drive_force(const Model& model, const State& state, int d);
+
+/// Updates history variables (crease angle and opening count, contact anchors) after an
+/// accepted step or a converged equilibrium.
+void commit_history(const Model& model, State& state);
+
+}  // namespace finseg

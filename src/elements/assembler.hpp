@@ -1,0 +1,133 @@
+// Accumulates element wrenches into per-body resultants and, on request, the exact
+// Jacobian blocks of each element by forward-mode automatic differentiation.
+//
+// A kernel is a generic callable  T kernel(const BodyKin<T>& A, const BodyKin<T>& B,
+// Wrench<T>& on_A, Wrench<T>& on_B)  (or the one-body form for `single`) that returns the
+// element's potential energy. It is evaluated with T = double for forces, and with an
+// autodiff scalar seeded with the bodies' pose perturbations (dp, dphi) and velocities when
+// the Jacobian is wanted.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "elements/assemble.hpp"
+#include "elements/kinematics.hpp"
+
+namespace finseg {
+
+class Assembler {
+ public:
+  Assembler(const Model& model, const State& state, BodyForces& out, bool want_jacobian)
+      : model_(model), state_(state), out_(out), want_jacobian_(want_jacobian) {}
+
+  bool want_jacobian() const { return want_jacobian_; }
+  const Model& model() const { return model_; }
+  const State& state() const { return state_; }
+
+  /// Plain kinematics of body i from the state.
+  BodyKin<double> kin(int i) const {
+    return {state_.p_W[i], state_.R_WB[i], state_.v_W[i], state_.w_W[i]};
+  }
+
+  /// Adds a two-body element.
+  template <class Kernel>
+  void pair(int a, int b, Kernel&& kernel) {
+    if (!want_jacobian_ || (model_.dof_of_body[a] < 0 && model_.dof_of_body[b] < 0)) {
+      Wrench<double> wa, wb;
+      out_.potential_energy += kernel(kin(a), kin(b), wa, wb);
+      add(a, wa);
+      add(b, wb);
+      return;
+    }
+    using AD = AutoDiff<24>;
+    const BodyKin<AD> A = seeded<24>(a, 0, 2), B = seeded<24>(b, 1, 2);
+    Wrench<AD> wa, wb;
+    out_.potential_energy += value_of(kernel(A, B, wa, wb));
+    const int bodies[2] = {a, b};
+    scatter<24>(a, wa, bodies, 2);
+    scatter<24>(b, wb, bodies, 2);
+  }
+
+  /// Adds a one-body load.
+  template <class Kernel>
+  void single(int a, Kernel&& kernel) {
+    if (!want_jacobian_ || model_.dof_of_body[a] < 0) {
+      Wrench<double> wa;
+      out_.potential_energy += kernel(kin(a), wa);
+      add(a, wa);
+      return;
+    }
+    using AD = AutoDiff<12>;
+    const BodyKin<AD> A = seeded<12>(a, 0, 1);
+    Wrench<AD> wa;
+    out_.potential_energy += value_of(kernel(A, wa));
+    const int bodies[1] = {a};
+    scatter<12>(a, wa, bodies, 1);
+  }
+
+  /// Adds a plain wrench with no Jacobian contribution (constant loads).
+  void add(int i, const Wrench<double>& w) {
+    out_.f_W[i] += w.f_W;
+    out_.tau_W[i] += w.tau_W;
+  }
+
+  /// Adds potential energy that has no force of its own (bookkeeping).
+  void add_energy(double e) { out_.potential_energy += e; }
+
+  std::vector<Eigen::Triplet<double>> dq_triplets, dv_triplets;
+
+ private:
+  // Slot s of n bodies: pose variables at 6s..6s+5, velocities at 6n+6s..6n+6s+5.
+  template <int N>
+  BodyKin<AutoDiff<N>> seeded(int i, int slot, int n) const {
+    using AD = AutoDiff<N>;
+    using D = typename AD::DerType;
+    BodyKin<AD> k;
+    const bool free = model_.dof_of_body[i] >= 0;
+    Vec3T<AD> dphi;
+    for (int r = 0; r < 3; ++r) {
+      const int ip = 6 * slot + r, ir = 6 * slot + 3 + r;
+      const int iv = 6 * n + 6 * slot + r, iw = 6 * n + 6 * slot + 3 + r;
+      k.p_W[r] = free ? AD(state_.p_W[i][r], N, ip) : AD(state_.p_W[i][r], D::Zero());
+      dphi[r] = free ? AD(0.0, N, ir) : AD(0.0, D::Zero());
+      k.v_W[r] = free ? AD(state_.v_W[i][r], N, iv) : AD(state_.v_W[i][r], D::Zero());
+      k.w_W[r] = free ? AD(state_.w_W[i][r], N, iw) : AD(state_.w_W[i][r], D::Zero());
+    }
+    // First order in dphi is all a Jacobian needs: R = (I + [dphi]x) R0.
+    const Mat3T<AD> R0 = state_.R_WB[i].cast<AD>();
+    k.R_WB = R0 + hat(dphi) * R0;
+    return k;
+  }
+
+  template <int N>
+  void scatter(int i, const Wrench<AutoDiff<N>>& w, const int* bodies, int n) {
+    Wrench<double> plain;
+    for (int r = 0; r < 3; ++r) {
+      plain.f_W[r] = w.f_W[r].value();
+      plain.tau_W[r] = w.tau_W[r].value();
+    }
+    add(i, plain);
+    const int row0 = model_.dof_of_body[i];
+    if (row0 < 0) return;
+    for (int s = 0; s < n; ++s) {
+      const int col0 = model_.dof_of_body[bodies[s]];
+      if (col0 < 0) continue;
+      for (int r = 0; r < 6; ++r) {
+        const auto& d = r < 3 ? w.f_W[r].derivatives() : w.tau_W[r - 3].derivatives();
+        for (int c = 0; c < 6; ++c) {
+          const double q = d[6 * s + c], v = d[6 * n + 6 * s + c];
+          if (q != 0.0) dq_triplets.emplace_back(row0 + r, col0 + c, q);
+          if (v != 0.0) dv_triplets.emplace_back(row0 + r, col0 + c, v);
+        }
+      }
+    }
+  }
+
+  const Model& model_;
+  const State& state_;
+  BodyForces& out_;
+  bool want_jacobian_;
+};
+
+}  // namespace finseg

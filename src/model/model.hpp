@@ -1,0 +1,120 @@
+// Model: what the structure is (bodies, force elements, fixtures, loads, drives, probes).
+// Immutable once built, plain arrays like MuJoCo's mjModel. Where it is now lives in State.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/crease_def.hpp"
+#include "model/contact_def.hpp"
+
+namespace finseg {
+
+/// A rigid segment: a thin box cut from the sheet. Body frame B: origin at the centroid,
+/// x along the sheet's length, y across, z along the normal.
+struct BodyDef {
+  std::string name;
+  double mass = 0;            ///< kg
+  Mat3 J_B = Mat3::Zero();    ///< inertia about the centroid in frame B, kg m^2
+  Vec3 size = Vec3::Zero();   ///< box edge lengths along B's x, y, z (z = thickness), m
+  Vec3 p0_W = Vec3::Zero();   ///< initial centroid position, m
+  Mat3 R0_WB = Mat3::Identity();  ///< initial orientation
+  bool fixed = false;         ///< clamped by a fixture: never moves
+  // Rectangle this body covers on the flat (unfolded) sheet, material coordinates in m:
+  // s along the length, y across. The centroid sits at the rectangle's centre.
+  double s_min = 0, s_max = 0, y_min = 0, y_max = 0;
+  int panel = 0;  ///< fold panel (part of the sheet between two creases), 0-based
+};
+
+/// Six-DOF spring-damper force element E_k between inner body e+(k) and outer body e-(k)
+/// (paper eqs. 5-7). Its frame E is fixed to the inner body and F to the outer body; they
+/// coincide in the rest (flat-sheet) configuration. Translations and rotations are
+/// measured in F: z_F = R_WF^T (P+ - P-) - z0_F, theta = log(R_FE).
+struct ElementDef {
+  int inner = -1;                   ///< e+(k): body carrying P+
+  int outer = -1;                   ///< e-(k): body carrying P-
+  Vec3 c_inner_B = Vec3::Zero();    ///< lever vector c_{e+(k)k}: centroid -> P+, inner frame
+  Vec3 c_outer_B = Vec3::Zero();    ///< lever vector c_{e-(k)k}: centroid -> P-, outer frame
+  Mat3 R_inner_E = Mat3::Identity();  ///< element frame E in the inner body's frame
+  Mat3 R_outer_F = Mat3::Identity();  ///< element frame F in the outer body's frame
+  Vec6 K = Vec6::Zero();  ///< diagonal stiffness: T1..T3 in N/m, theta1..3 in N m/rad
+  Vec6 C = Vec6::Zero();  ///< diagonal damping: N s/m and N m s/rad
+  Vec3 z0_F = Vec3::Zero();  ///< rest offset of P+ from P- in F, m
+  int crease = -1;  ///< index into Model::creases (rotation about F's y from a crease law)
+  std::string name;
+};
+
+/// A dead or follower point load on one body (scaled by State::load_scale).
+struct LoadDef {
+  int body = -1;
+  Vec3 point_B = Vec3::Zero();  ///< application point in the body frame, m
+  Vec3 force = Vec3::Zero();    ///< N, world frame (dead) or body frame (follower)
+  Vec3 moment = Vec3::Zero();   ///< N m, same frame rule as force
+  bool follower = false;
+};
+
+/// Displacement drive with a force gauge: the point `point_B` of `body` is pulled towards
+/// the target start_W + s * direction_W through a spring of stiffness `stiffness` (the
+/// push-pull gauge). s is the drive displacement, held in State::drive_s.
+struct DriveDef {
+  std::string name;
+  int body = -1;
+  Vec3 point_B = Vec3::Zero();
+  Vec3 start_W = Vec3::Zero();      ///< target at s = 0 (the point's initial position), m
+  Vec3 direction_W = Vec3::UnitZ();  ///< unit pull direction
+  double stiffness = 1e3;          ///< gauge stiffness along all three axes, N/m
+  double damping = 0;              ///< gauge damping, N s/m
+  double speed = 0;                ///< dynamic solvers: ds/dt, m/s
+  double travel = 0;               ///< total drive displacement, m
+  double step = 0;                 ///< quasi-static solver: displacement increment, m
+};
+
+enum class ProbeKind { Point, Drive, Reaction, Energy, Contact };
+
+/// Something a user wants recorded over the run (one CSV per probe).
+struct ProbeDef {
+  std::string name;
+  ProbeKind kind = ProbeKind::Point;
+  int body = -1;                ///< Point: body carrying the point
+  Vec3 point_B = Vec3::Zero();  ///< Point: position in the body frame
+  int drive = -1;               ///< Drive: which drive's gauge
+};
+
+/// Description of the flat sheet a model was cut from (used by writers and probes).
+struct SheetInfo {
+  double length = 0, width = 0, thickness = 0;  ///< m
+  double youngs_modulus = 0;                    ///< Pa
+  double poisson_ratio = 0;
+  double density = 0;  ///< kg/m^3
+};
+
+/// The whole structure. Built by generators or the scene reader; never mutated by solvers.
+struct Model {
+  std::string source = "<api>";  ///< file it came from, for messages
+  SheetInfo sheet;
+  std::vector<BodyDef> bodies;
+  std::vector<ElementDef> elements;
+  std::vector<CreaseDef> creases;
+  std::vector<LoadDef> loads;
+  std::vector<DriveDef> drives;
+  std::vector<ProbeDef> probes;
+  ContactDef contact;
+  Vec3 gravity_W = Vec3::Zero();  ///< m/s^2
+
+  /// Index of the 6-DOF block of each body in solver vectors, -1 for fixed bodies.
+  std::vector<int> dof_of_body;
+  int num_dofs = 0;
+
+  /// Fills dof_of_body / num_dofs; call after the body list is final.
+  void finalize_dofs();
+  int body_index(const std::string& name) const;  ///< -1 if absent
+};
+
+/// Mass and centroidal inertia of a box of edge lengths `size` and total mass `mass`.
+Mat3 box_inertia(double mass, const Vec3& size);
+
+/// Checks sizes, indices and finiteness; throws InputError naming model.source.
+void validate(const Model& model);
+
+}  // namespace finseg

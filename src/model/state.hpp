@@ -1,0 +1,33 @@
+// State: where the structure is now (poses, velocities, time, history). Like MuJoCo's mjData.
+// Solvers advance it; elements read it and never own it.
+#pragma once
+
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/model.hpp"
+
+namespace finseg {
+
+/// History carried by one force element between accepted steps.
+struct ElementHistory {
+  double fold_angle = 0;  ///< last accepted unwrapped fold angle (creases), rad
+  int openings = 0;       ///< completed openings of the crease
+  bool opened = false;    ///< currently past the opening threshold
+};
+
+struct State {
+  double t = 0;                  ///< s (static solver: load or drive parameter)
+  std::vector<Vec3> p_W;         ///< centroid positions, m
+  std::vector<Mat3> R_WB;        ///< orientations
+  std::vector<Vec3> v_W;         ///< centroid velocities, m/s
+  std::vector<Vec3> w_W;         ///< angular velocities in world frame, rad/s
+  std::vector<double> drive_s;   ///< displacement of each drive, m
+  double load_scale = 1.0;       ///< multiplies loads and gravity (static load stepping)
+  std::vector<ElementHistory> history;  ///< one per force element
+};
+
+/// State at t = 0: initial poses, zero velocities, initial crease angles.
+State initial_state(const Model& model);
+
+}  // namespace finseg
