@@ -1,0 +1,8 @@
+// finseg identify: not implemented yet.
+#include "apps/finseg/commands.hpp"
+
+namespace finseg::cli {
+
+void register_identify(CLI::App& /*app*/) {}
+
+}  // namespace finseg::cli

@@ -1,0 +1,15 @@
+// Each subcommand of the `finseg` command line lives in its own file and registers here.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace finseg::cli {
+
+void register_run(CLI::App& app);       ///< finseg run SCENE --out DIR
+void register_gen(CLI::App& app);       ///< finseg gen cantilever|zigzag ...
+void register_inspect(CLI::App& app);   ///< finseg inspect SCENE
+void register_modes(CLI::App& app);     ///< finseg modes SCENE
+void register_identify(CLI::App& app);  ///< finseg identify bending|crease DATA
+void register_compare(CLI::App& app);   ///< finseg compare SIM.csv EXP.csv...
+
+}  // namespace finseg::cli

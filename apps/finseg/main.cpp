@@ -1,0 +1,26 @@
+// finseg command line: a thin layer over the library.
+#include <fmt/format.h>
+
+#include <exception>
+
+#include "apps/finseg/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"finseg: finite-segment simulation of folded flexible sheets"};
+  app.require_subcommand(1);
+  finseg::cli::register_run(app);
+  finseg::cli::register_gen(app);
+  finseg::cli::register_inspect(app);
+  finseg::cli::register_modes(app);
+  finseg::cli::register_identify(app);
+  finseg::cli::register_compare(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "finseg: error: {}\n", e.what());
+    return 2;
+  }
+  return 0;
+}

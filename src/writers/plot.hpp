@@ -1,0 +1,32 @@
+// Plots through gnuplot (Debian's gnuplot-nox): PNG via the pngcairo terminal and SVG.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace finseg {
+
+/// One line of a plot.
+struct PlotSeries {
+  std::string title;
+  std::vector<double> x, y;
+  std::string style = "lines";  ///< gnuplot style: "lines", "points", "linespoints"
+};
+
+/// A vertical marker line with a label (e.g. a deployment-phase boundary).
+struct PlotMarker {
+  double x = 0;
+  std::string label;
+};
+
+struct PlotSpec {
+  std::string title, x_label, y_label;  ///< labels carry units
+  std::vector<PlotSeries> series;
+  std::vector<PlotMarker> markers;
+};
+
+/// Writes `path` (.png or .svg, chosen by extension); the data and the gnuplot script are
+/// kept beside it as path + ".dat"/".gp". Throws std::runtime_error if gnuplot fails.
+void write_plot(const std::string& path, const PlotSpec& spec);
+
+}  // namespace finseg
