@@ -1,5 +1,7 @@
-// Contact between segments: entry point used by the force assembly.
+// Contact between segments: entry points used by the force assembly and the probes.
 #pragma once
+
+#include <vector>
 
 #include "model/model.hpp"
 #include "model/state.hpp"
@@ -13,5 +15,15 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
 
 /// Updates contact history (friction anchors) after an accepted step.
 void commit_contact_history(const Model& model, State& state);
+
+/// What the contact probes record.
+struct ContactSummary {
+  int active = 0;                    ///< number of contact points with positive penetration
+  double total_normal_force = 0;     ///< N
+  double total_friction_force = 0;   ///< N (sum of magnitudes)
+  double max_penetration = 0;        ///< m
+  std::vector<Vec3> points_W;        ///< active contact points, m
+};
+ContactSummary contact_summary(const Model& model, const State& state);
 
 }  // namespace finseg
