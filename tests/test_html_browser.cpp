@@ -76,9 +76,8 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   ASSERT_FALSE(chromium.empty())
       << "chromium is not installed; run scripts/setup.sh (Debian package 'chromium')";
 
-  const fs::path dir = fs::temp_directory_path() / "finseg_test_browser";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const writer_test::TempDir tmp("html_browser");
+  const fs::path dir = tmp.path();
   const auto s = writer_test::make_zigzag_scene(40);
   const fs::path page = dir / "zigzag.html";
   write_html_animation(page.string(), "Zigzag strip (browser test)", s.model, s.frames, s.curve);
@@ -101,5 +100,4 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   // The chart is there and the readout names units.
   EXPECT_NE(dom.find("gauge force against pull displacement"), std::string::npos);
   EXPECT_TRUE(std::regex_search(dom, std::regex("time [0-9.]+ s")));
-  fs::remove_all(dir / "profile");
 }

@@ -28,12 +28,6 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-fs::path out_path(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / "finseg_test_html";
-  fs::create_directories(d);
-  return d / name;
-}
-
 nlohmann::json embedded_data(const std::string& page) {
   const std::string open = "<script id=\"finseg-data\" type=\"application/json\">";
   const std::size_t a = page.find(open);
@@ -47,7 +41,8 @@ nlohmann::json embedded_data(const std::string& page) {
 TEST(HtmlAnimation, SelfContainedPageWithEmbeddedFrames) {
   auto s = writer_test::make_zigzag_scene(20);
   s.model.bodies[4].name = "</script><b>odd name";  // must not end the data element
-  const fs::path path = out_path("zigzag.html");
+  const writer_test::TempDir tmp("html_page");
+  const fs::path path = tmp / "zigzag.html";
   write_html_animation(path.string(), "Zigzag <unfolding> & test", s.model, s.frames, s.curve);
   const std::string page = slurp(path);
 
@@ -97,8 +92,8 @@ TEST(HtmlAnimation, RefusesACurveThatDoesNotMatchTheFrames) {
   auto s = writer_test::make_zigzag_scene(5);
   s.curve.x.pop_back();
   s.curve.y.pop_back();
-  const fs::path path = out_path("bad.html");
-  fs::remove(path);
+  const writer_test::TempDir tmp("html_bad");
+  const fs::path path = tmp / "bad.html";
   EXPECT_THROW(write_html_animation(path.string(), "bad", s.model, s.frames, s.curve), InputError);
   EXPECT_THROW(write_html_animation(path.string(), "bad", s.model, {}, Curve{}), InputError);
   EXPECT_FALSE(fs::exists(path));

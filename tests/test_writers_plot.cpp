@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "writer_test_model.hpp"
 #include "writers/plot.hpp"
 
 namespace fs = std::filesystem;
@@ -42,17 +43,11 @@ PlotSpec sample_spec() {
   return spec;
 }
 
-fs::path out_dir() {
-  fs::path d = fs::temp_directory_path() / "finseg_test_plot";
-  fs::create_directories(d);
-  return d;
-}
-
 }  // namespace
 
 TEST(PlotWriter, WritesAPngWithDataAndScriptBeside) {
-  const fs::path png = out_dir() / "force.png";
-  fs::remove(png);
+  const writer_test::TempDir tmp("plot_png");
+  const fs::path png = tmp / "force.png";
   write_plot(png.string(), sample_spec());
   const std::string bytes = slurp(png);
   ASSERT_GT(bytes.size(), 1000u);
@@ -77,7 +72,8 @@ TEST(PlotWriter, WritesAPngWithDataAndScriptBeside) {
 }
 
 TEST(PlotWriter, WritesAnSvgWithTitleAndLabels) {
-  const fs::path svg = out_dir() / "force.svg";
+  const writer_test::TempDir tmp("plot_svg");
+  const fs::path svg = tmp / "force.svg";
   PlotSpec spec = sample_spec();
   spec.title = "Tom's force <test> & more";  // quote and XML characters survive
   write_plot(svg.string(), spec);
@@ -91,8 +87,8 @@ TEST(PlotWriter, WritesAnSvgWithTitleAndLabels) {
 }
 
 TEST(PlotWriter, ReportsGnuplotErrorsAndBadInput) {
-  const fs::path png = out_dir() / "broken.png";
-  fs::remove(png);
+  const writer_test::TempDir tmp("plot_bad");
+  const fs::path png = tmp / "broken.png";
   PlotSpec spec = sample_spec();
   for (auto& s : spec.series) {
     s.x.clear();
@@ -107,7 +103,7 @@ TEST(PlotWriter, ReportsGnuplotErrorsAndBadInput) {
   EXPECT_FALSE(fs::exists(png));
   EXPECT_FALSE(fs::exists(png.string() + ".partial"));
 
-  EXPECT_THROW(write_plot((out_dir() / "x.pdf").string(), sample_spec()), std::invalid_argument);
+  EXPECT_THROW(write_plot((tmp / "x.pdf").string(), sample_spec()), std::invalid_argument);
   spec = sample_spec();
   spec.series[0].y.pop_back();
   EXPECT_THROW(write_plot(png.string(), spec), std::invalid_argument);

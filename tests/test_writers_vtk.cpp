@@ -26,12 +26,6 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("finseg_test_" + name);
-  fs::remove_all(d);
-  return d;
-}
-
 std::string attr(const std::string& xml, const std::string& name) {
   std::smatch m;
   const std::regex re(name + "=\"([^\"]*)\"");
@@ -73,7 +67,8 @@ TEST(VtkWriter, BoxesParseBackWithHandComputedCorners) {
   Rz << 0, -1, 0, 1, 0, 0, 0, 0, 1;
   f.p_W = {Vec3(1, 2, 3), Vec3(-5, 0, 0)};
   f.R_WB = {Rz, Mat3::Identity()};
-  const fs::path dir = fresh_dir("vtk_boxes");
+  const writer_test::TempDir tmp("vtk_boxes");
+  const fs::path dir = tmp / "out";  // not there yet: the writer creates it
   write_vtk_series(dir.string(), "run", m, {f});
 
   const std::string vtu = slurp(dir / "run_00000.vtu");
@@ -119,7 +114,8 @@ TEST(VtkWriter, BoxesParseBackWithHandComputedCorners) {
 
 TEST(VtkWriter, CollectionListsEveryFrameWithItsTime) {
   const auto s = writer_test::make_zigzag_scene(12);
-  const fs::path dir = fresh_dir("vtk_series");
+  const writer_test::TempDir tmp("vtk_series");
+  const fs::path dir = tmp.path();
   write_vtk_series(dir.string(), "zig", s.model, s.frames);
 
   const std::string pvd = slurp(dir / "zig.pvd");
@@ -154,7 +150,8 @@ TEST(VtkWriter, CollectionListsEveryFrameWithItsTime) {
 TEST(VtkWriter, RefusesFramesThatDoNotFitTheModel) {
   auto s = writer_test::make_zigzag_scene(3);
   s.frames[1].p_W.pop_back();
-  const fs::path dir = fresh_dir("vtk_bad");
+  const writer_test::TempDir tmp("vtk_bad");
+  const fs::path dir = tmp.path();
   EXPECT_THROW(write_vtk_series(dir.string(), "bad", s.model, s.frames), InputError);
   EXPECT_FALSE(fs::exists(dir / "bad.pvd"));
   s = writer_test::make_zigzag_scene(3);

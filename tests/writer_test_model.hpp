@@ -2,7 +2,12 @@
 // six panels (three segments each) that opens up over the frames. Lengths in m, time in s.
 #pragma once
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -12,6 +17,31 @@
 #include "writers/frames.hpp"
 
 namespace finseg::writer_test {
+
+/// A fresh folder for one test's output, unique to this process (tests of several build
+/// trees may run at once). Removed at the end unless FINSEG_KEEP_TEST_OUTPUT is set.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() /
+              ("finseg_" + name + "_" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    if (!std::getenv("FINSEG_KEEP_TEST_OUTPUT")) {
+      std::error_code ec;
+      std::filesystem::remove_all(path_, ec);
+    }
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 struct ZigzagScene {
   Model model;

@@ -75,10 +75,11 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
   g += "set border 3 lw 1.2 lc rgb '#333333'\n";
   g += "set tics nomirror out\n";
   g += "set mxtics 2\nset mytics 2\n";
-  g += "set grid xtics ytics mxtics mytics lw 1 lc rgb '#e4e4e4', lw 0.5 lc rgb '#f2f2f2'\n";
-  g += "set style line 100 lc rgb '#c8c8c8' lw 1\n";
-  g += "set key top left opaque box ls 100 spacing 1.3 samplen 3 width 1\n";
-  g += "set offsets graph 0.0, graph 0.0, graph 0.05, graph 0.05\n";
+  g += "set grid xtics ytics mxtics mytics back lt 1 dt solid lw 1 lc rgb '#dedede', lt 1 dt solid lw 0.6 lc rgb '#f0f0f0'\n";
+  g += "set key outside below center horizontal noreverse samplen 3 spacing 1.2 width 2\n";
+  g += "set style textbox opaque noborder margins 1, 1\n";
+  g += "set autoscale xfix\nset autoscale yfix\n";
+  g += "set offsets graph 0.0, graph 0.0, graph 0.06, graph 0.04\n";
   for (std::size_t i = 0; i < std::size(kColours); ++i) {
     g += fmt::format("set linetype {} lc rgb '{}' lw 2.2 pt 7 ps 0.7\n", i + 1, kColours[i]);
   }
@@ -89,8 +90,8 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
         "lc rgb '#555555'\n",
         m + 1, mk.x, mk.x);
     g += fmt::format(
-        "set label {} {} at {:.10g}, graph 0.98 right rotate by 90 offset char -0.7, 0 "
-        "front font ',10' tc rgb '#333333'\n",
+        "set label {} {} at {:.10g}, graph 0.98 right rotate by 90 offset char -0.9, 0 "
+        "front boxed font ',10' tc rgb '#333333'\n",
         m + 1, gp_quote(mk.label), mk.x);
   }
   g += "plot \\\n";

@@ -33,7 +33,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   .card { background: var(--panel); border: 1px solid var(--line); border-radius: 8px;
     box-shadow: 0 1px 2px rgba(20, 30, 40, 0.06); position: relative; min-width: 0; }
   #view { flex: 1.45; overflow: hidden; }
-  #view canvas { display: block; width: 100%; height: 100%; cursor: grab; }
+  #view canvas { position: absolute; left: 0; top: 0; display: block; cursor: grab; }
   #view canvas:active { cursor: grabbing; }
   .overlay { position: absolute; pointer-events: none; font-size: 12px; color: var(--muted); }
   #legend { top: 10px; left: 12px; background: rgba(255, 255, 255, 0.88); padding: 7px 10px;
@@ -54,6 +54,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   #current b { color: var(--ink); font-weight: 600; }
   #controls { display: flex; align-items: center; gap: 12px; margin: 12px 18px 14px;
     padding: 10px 14px; }
+  button svg { display: inline-block; vertical-align: -2px; }
   button { font: inherit; border: 1px solid var(--line); background: #f7f9fb; color: var(--ink);
     border-radius: 6px; padding: 6px 10px; cursor: pointer; min-width: 38px; }
   button:hover { background: #edf1f5; }
@@ -86,10 +87,10 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   </div>
 </main>
 <div class="card" id="controls">
-  <button id="first" title="first frame">&#x23EE;</button>
-  <button id="prev" title="previous frame">&#x25C0;</button>
-  <button id="play" class="primary" title="play / pause (space)">&#x25B6; Play</button>
-  <button id="next" title="next frame">&#x25B6;</button>
+  <button id="first" title="first frame"><svg viewBox="0 0 16 16" width="14" height="14"><rect x="2" y="3" width="2" height="10" fill="currentColor"/><path d="M14 3v10L5 8z" fill="currentColor"/></svg></button>
+  <button id="prev" title="previous frame (&larr;)"><svg viewBox="0 0 16 16" width="14" height="14"><path d="M12 3v10L4 8z" fill="currentColor"/></svg></button>
+  <button id="play" class="primary" title="play / pause (space)"></button>
+  <button id="next" title="next frame (&rarr;)"><svg viewBox="0 0 16 16" width="14" height="14"><path d="M4 3v10l8-5z" fill="currentColor"/></svg></button>
   <input type="range" id="slider" min="0" max="0" value="0" step="1" aria-label="frame">
   <label>speed <select id="speed">
     <option value="5">5 frames/s</option><option value="10">10 frames/s</option>
@@ -125,7 +126,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   }
   function decimalsFor(range) {
     if (!(range > 0)) return 3;
-    return Math.max(0, Math.min(8, 3 - Math.floor(Math.log10(range))));
+    return Math.max(0, Math.min(8, 2 - Math.floor(Math.log10(range))));
   }
   function niceStep(x) {
     var p = Math.pow(10, Math.floor(Math.log10(x))), f = x / p;
@@ -195,7 +196,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   var camera = new THREE.PerspectiveCamera(35, 1, radius / 200, radius * 200);
   camera.up.set(0, 0, 1);
   var viewDir = new THREE.Vector3(0.55, -1.5, 0.75).normalize();
-  camera.position.copy(center).addScaledVector(viewDir, radius * 3.0);
+  camera.position.copy(center).addScaledVector(viewDir, radius * 2.7);
   scene.add(camera);
   scene.add(new THREE.HemisphereLight(0xffffff, 0x7d8896, 0.75));
   var sun = new THREE.DirectionalLight(0xffffff, 0.55);
@@ -205,18 +206,23 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   sky.position.set(-0.5, 0.8, 1.5);
   scene.add(sky);
 
-  // Ground grid in the world x-y plane, just below the lowest point.
-  var gridStep = niceStep(radius / 4);
-  var gridCount = Math.max(4, Math.ceil((2.4 * radius) / gridStep));
+  // The grid lies in the world x-y plane, just below the lowest point.
+  // Ground grid covering the x-y extent of the motion with a margin.
+  var span = Math.max(hi[0] - lo[0], hi[1] - lo[1], 0.2 * radius);
+  var gridStep = niceStep(span / 8);
+  var gridCount = Math.max(4, Math.ceil((1.5 * span) / gridStep));
   if (gridCount % 2) gridCount++;
   var grid = new THREE.GridHelper(gridCount * gridStep, gridCount, 0xb9c3ce, 0xdde3ea);
   grid.rotation.x = Math.PI / 2;
   grid.position.set(Math.round(center.x / gridStep) * gridStep,
                     Math.round(center.y / gridStep) * gridStep, lo[2] - 0.02 * radius);
   scene.add(grid);
+  // World axes at the origin when it lies within the scene, else at the low corner.
   var axes = new THREE.AxesHelper(gridStep);
-  axes.position.set(grid.position.x - gridCount * gridStep / 2,
-                    grid.position.y - gridCount * gridStep / 2, grid.position.z);
+  var inside = lo[0] <= 0 && hi[0] >= 0 && lo[1] <= 0 && hi[1] >= 0 && lo[2] <= 0 && hi[2] >= 0;
+  if (inside) axes.position.set(0, 0, 0); else axes.position.set(lo[0], lo[1], lo[2]);
+  axes.material.depthTest = false;
+  axes.renderOrder = 5;
   scene.add(axes);
 
   var meshes = [], panelsSeen = {}, anyFixed = false;
@@ -244,8 +250,15 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     contactGeo = new THREE.BufferGeometry();
     contactGeo.setAttribute("position",
       new THREE.BufferAttribute(new Float32Array(3 * maxContacts), 3));
+    var dot = document.createElement("canvas");
+    dot.width = dot.height = 32;
+    var dc = dot.getContext("2d");
+    dc.beginPath(); dc.arc(16, 16, 13, 0, 2 * Math.PI);
+    dc.fillStyle = "#d62728"; dc.fill();
+    dc.lineWidth = 3; dc.strokeStyle = "#ffffff"; dc.stroke();
     var pts = new THREE.Points(contactGeo, new THREE.PointsMaterial({
-      color: 0xd62728, size: 7, sizeAttenuation: false, depthTest: false }));
+      size: 11, sizeAttenuation: false, depthTest: false, transparent: true,
+      map: new THREE.CanvasTexture(dot), alphaTest: 0.3 }));
     pts.renderOrder = 10;
     scene.add(pts);
   }
@@ -282,6 +295,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     renderer.domElement.style.height = h + "px";
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
+    if (chart) chart.resize();
     render();
   }
   // Self-test mode (URL ?selftest=1, used by the browser test): after each render, count
@@ -406,6 +420,12 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     render();
   }
 
+  var PLAY_ICON = '<svg viewBox="0 0 16 16" width="13" height="13" style="vertical-align:-1px">' +
+    '<path d="M4 2.5v11l9.5-5.5z" fill="currentColor"/></svg>';
+  var PAUSE_ICON = '<svg viewBox="0 0 16 16" width="13" height="13" style="vertical-align:-1px">' +
+    '<rect x="3.5" y="2.5" width="3" height="11" fill="currentColor"/>' +
+    '<rect x="9.5" y="2.5" width="3" height="11" fill="currentColor"/></svg>';
+  playBtn.innerHTML = PLAY_ICON + " Play";
   var fps = 30, acc = 0, last = 0, timer = null;
   var speedSel = document.getElementById("speed"), loopBox = document.getElementById("loop");
   function tick() {
@@ -431,14 +451,14 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     if (st.playing || N < 2) return;
     if (st.frame >= N - 1 && !loopBox.checked) setFrame(0);
     st.playing = true; acc = 0; last = performance.now();
-    playBtn.innerHTML = "&#x23F8; Pause";
+    playBtn.innerHTML = PAUSE_ICON + " Pause";
     statusEl.setAttribute("data-playing", "1");
     timer = setTimeout(tick, 0);
   }
   function pause() {
     st.playing = false;
     if (timer !== null) { clearTimeout(timer); timer = null; }
-    playBtn.innerHTML = "&#x25B6; Play";
+    playBtn.innerHTML = PLAY_ICON + " Play";
     statusEl.setAttribute("data-playing", "0");
   }
   st.setFrame = setFrame; st.play = play; st.pause = pause;
@@ -457,8 +477,10 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   });
   window.addEventListener("resize", resize);
 
+  // URL options: ?frame=N (start at frame N, 0-based), ?autoplay=0 (start paused).
+  var startFrame = /[?&]frame=(\d+)/.exec(location.search);
   resize();
-  setFrame(0);
+  setFrame(startFrame ? +startFrame[1] : 0);
   if (!/[?&]autoplay=0/.test(location.search)) play();
 })();
 </script>
