@@ -98,6 +98,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     <option value="60">60 frames/s</option><option value="120">120 frames/s</option>
   </select></label>
   <label><input type="checkbox" id="loop" checked> loop</label>
+  <button id="resetview" title="show the whole motion from the default direction">reset view</button>
   <span id="status" data-frame="0" data-frames="0" data-rendered="0" data-advanced="0" data-drawn="-1" data-playing="0" data-error="">loading&hellip;</span>
 </div>
 @@LIBS@@
@@ -196,7 +197,15 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   var camera = new THREE.PerspectiveCamera(35, 1, radius / 200, radius * 200);
   camera.up.set(0, 0, 1);
   var viewDir = new THREE.Vector3(0.55, -1.5, 0.75).normalize();
-  camera.position.copy(center).addScaledVector(viewDir, radius * 2.7);
+  // Puts the whole motion's bounding sphere in view, from the default direction.
+  function frameAll() {
+    var vHalf = (camera.fov * Math.PI) / 360;
+    var hHalf = Math.atan(Math.tan(vHalf) * camera.aspect);
+    var dist = (1.08 * radius) / Math.sin(Math.min(vHalf, hHalf));
+    camera.position.copy(center).addScaledVector(viewDir, dist);
+    camera.lookAt(center);
+    if (controls) { controls.target.copy(center); controls.update(); }
+  }
   scene.add(camera);
   scene.add(new THREE.HemisphereLight(0xffffff, 0x7d8896, 0.75));
   var sun = new THREE.DirectionalLight(0xffffff, 0.55);
@@ -475,11 +484,13 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     else if (e.key === "ArrowRight") { pause(); setFrame(st.frame + 1); }
     else if (e.key === "ArrowLeft") { pause(); setFrame(st.frame - 1); }
   });
+  document.getElementById("resetview").addEventListener("click", function () { frameAll(); render(); });
   window.addEventListener("resize", resize);
 
   // URL options: ?frame=N (start at frame N, 0-based), ?autoplay=0 (start paused).
   var startFrame = /[?&]frame=(\d+)/.exec(location.search);
   resize();
+  frameAll();
   setFrame(startFrame ? +startFrame[1] : 0);
   if (!/[?&]autoplay=0/.test(location.search)) play();
 })();
