@@ -18,6 +18,25 @@
 
 namespace finseg::writer_test {
 
+/// Value of the first attribute `name="..."` in `text` at or after `from` ("<missing>" if
+/// none). Plain string search: std::regex trips GCC 12 warnings in the sanitizer build.
+inline std::string xml_attr(const std::string& text, const std::string& name,
+                            std::size_t from = 0) {
+  const std::string key = " " + name + "=\"";
+  const std::size_t a = text.find(key, from);
+  if (a == std::string::npos) return "<missing>";
+  const std::size_t b = text.find('"', a + key.size());
+  return text.substr(a + key.size(), b - a - key.size());
+}
+
+/// The opening tag `<tag ...>` of the first element whose start contains `marker`.
+inline std::string opening_tag(const std::string& text, const std::string& marker) {
+  const std::size_t a = text.find(marker);
+  if (a == std::string::npos) return "";
+  const std::size_t start = text.rfind('<', a);
+  return text.substr(start, text.find('>', a) - start + 1);
+}
+
 /// A fresh folder for one test's output, unique to this process (tests of several build
 /// trees may run at once). Removed at the end unless FINSEG_KEEP_TEST_OUTPUT is set.
 class TempDir {
