@@ -5,7 +5,7 @@ packages=(
   cmake ninja-build g++ clang-format
   libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libboost-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  gnuplot-nox libjs-three libjs-chart.js
+  gnuplot-nox libjs-three libjs-chart.js chromium
 )
 missing=()
 for p in "${packages[@]}"; do
