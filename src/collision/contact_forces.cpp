@@ -7,6 +7,8 @@ void add_contact_forces(const Model&, const State&, Assembler&) {}
 
 void commit_contact_history(const Model&, State&) {}
 
-ContactSummary contact_summary(const Model&, const State&) { return {}; }
+ContactSummary contact_summary(const Model&, const State&) {
+  return {};
+}
 
 }  // namespace finseg

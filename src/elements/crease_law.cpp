@@ -17,7 +17,9 @@ MomentSample LinearCreaseLaw::evaluate(double alpha, const ElementHistory&, doub
   return {k_ * (alpha - rest_), k_};
 }
 
-double LinearCreaseLaw::rest_angle(const ElementHistory&, double) const { return rest_; }
+double LinearCreaseLaw::rest_angle(const ElementHistory&, double) const {
+  return rest_;
+}
 
 std::string LinearCreaseLaw::describe() const {
   return fmt::format("linear k={} N m/rad rest={} rad", k_, rest_);

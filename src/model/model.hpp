@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "model/crease_def.hpp"
 #include "model/contact_def.hpp"
+#include "model/crease_def.hpp"
 
 namespace finseg {
 
@@ -15,12 +15,12 @@ namespace finseg {
 /// x along the sheet's length, y across, z along the normal.
 struct BodyDef {
   std::string name;
-  double mass = 0;            ///< kg
-  Mat3 J_B = Mat3::Zero();    ///< inertia about the centroid in frame B, kg m^2
-  Vec3 size = Vec3::Zero();   ///< box edge lengths along B's x, y, z (z = thickness), m
-  Vec3 p0_W = Vec3::Zero();   ///< initial centroid position, m
+  double mass = 0;                ///< kg
+  Mat3 J_B = Mat3::Zero();        ///< inertia about the centroid in frame B, kg m^2
+  Vec3 size = Vec3::Zero();       ///< box edge lengths along B's x, y, z (z = thickness), m
+  Vec3 p0_W = Vec3::Zero();       ///< initial centroid position, m
   Mat3 R0_WB = Mat3::Identity();  ///< initial orientation
-  bool fixed = false;         ///< clamped by a fixture: never moves
+  bool fixed = false;             ///< clamped by a fixture: never moves
   // Rectangle this body covers on the flat (unfolded) sheet, material coordinates in m:
   // s along the length, y across. The centroid sits at the rectangle's centre.
   double s_min = 0, s_max = 0, y_min = 0, y_max = 0;
@@ -32,15 +32,15 @@ struct BodyDef {
 /// coincide in the rest (flat-sheet) configuration. Translations and rotations are
 /// measured in F: z_F = R_WF^T (P+ - P-) - z0_F, theta = log(R_FE).
 struct ElementDef {
-  int inner = -1;                   ///< e+(k): body carrying P+
-  int outer = -1;                   ///< e-(k): body carrying P-
-  Vec3 c_inner_B = Vec3::Zero();    ///< lever vector c_{e+(k)k}: centroid -> P+, inner frame
-  Vec3 c_outer_B = Vec3::Zero();    ///< lever vector c_{e-(k)k}: centroid -> P-, outer frame
+  int inner = -1;                     ///< e+(k): body carrying P+
+  int outer = -1;                     ///< e-(k): body carrying P-
+  Vec3 c_inner_B = Vec3::Zero();      ///< lever vector c_{e+(k)k}: centroid -> P+, inner frame
+  Vec3 c_outer_B = Vec3::Zero();      ///< lever vector c_{e-(k)k}: centroid -> P-, outer frame
   Mat3 R_inner_E = Mat3::Identity();  ///< element frame E in the inner body's frame
   Mat3 R_outer_F = Mat3::Identity();  ///< element frame F in the outer body's frame
-  Vec6 K = Vec6::Zero();  ///< diagonal stiffness: T1..T3 in N/m, theta1..3 in N m/rad
-  Vec6 C = Vec6::Zero();  ///< diagonal damping: N s/m and N m s/rad
-  Vec3 z0_F = Vec3::Zero();  ///< rest offset of P+ from P- in F, m
+  Vec6 K = Vec6::Zero();              ///< diagonal stiffness: T1..T3 in N/m, theta1..3 in N m/rad
+  Vec6 C = Vec6::Zero();              ///< diagonal damping: N s/m and N m s/rad
+  Vec3 z0_F = Vec3::Zero();           ///< rest offset of P+ from P- in F, m
   int crease = -1;  ///< index into Model::creases (rotation about F's y from a crease law)
   std::string name;
 };
@@ -61,13 +61,13 @@ struct DriveDef {
   std::string name;
   int body = -1;
   Vec3 point_B = Vec3::Zero();
-  Vec3 start_W = Vec3::Zero();      ///< target at s = 0 (the point's initial position), m
+  Vec3 start_W = Vec3::Zero();       ///< target at s = 0 (the point's initial position), m
   Vec3 direction_W = Vec3::UnitZ();  ///< unit pull direction
-  double stiffness = 1e3;          ///< gauge stiffness along all three axes, N/m
-  double damping = 0;              ///< gauge damping, N s/m
-  double speed = 0;                ///< dynamic solvers: ds/dt, m/s
-  double travel = 0;               ///< total drive displacement, m
-  double step = 0;                 ///< quasi-static solver: displacement increment, m
+  double stiffness = 1e3;            ///< gauge stiffness along all three axes, N/m
+  double damping = 0;                ///< gauge damping, N s/m
+  double speed = 0;                  ///< dynamic solvers: ds/dt, m/s
+  double travel = 0;                 ///< total drive displacement, m
+  double step = 0;                   ///< quasi-static solver: displacement increment, m
 };
 
 enum class ProbeKind { Point, Drive, Reaction, Energy, Contact };

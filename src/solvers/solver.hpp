@@ -16,28 +16,28 @@ struct SolverSettings {
   SolverKind kind = SolverKind::Static;
   double t_end = 1.0;            ///< dynamic solvers: simulated time, s
   double output_interval = 0.0;  ///< s between recorded outputs (0: every 1/100 of t_end)
-  double dt = 0.0;       ///< explicit: fixed step (0: automatic from the highest frequency);
-                         ///< implicit: first step
-  double dt_min = 1e-9;  ///< implicit: smallest step before giving up, s
-  double dt_max = 0.0;   ///< implicit: largest step (0: output_interval)
-  double rtol = 1e-4;    ///< implicit: relative local error tolerance
-  double atol = 1e-7;    ///< implicit: absolute local error tolerance (m and rad)
-  int load_steps = 1;    ///< static: initial number of load increments
-  int max_iterations = 50;      ///< static/implicit: Newton iterations per solve
-  double tolerance = 1e-9;      ///< static: residual tolerance relative to the load scale
+  double dt = 0.0;          ///< explicit: fixed step (0: automatic from the highest frequency);
+                            ///< implicit: first step
+  double dt_min = 1e-9;     ///< implicit: smallest step before giving up, s
+  double dt_max = 0.0;      ///< implicit: largest step (0: output_interval)
+  double rtol = 1e-4;       ///< implicit: relative local error tolerance
+  double atol = 1e-7;       ///< implicit: absolute local error tolerance (m and rad)
+  int load_steps = 1;       ///< static: initial number of load increments
+  int max_iterations = 50;  ///< static/implicit: Newton iterations per solve
+  double tolerance = 1e-9;  ///< static: residual tolerance relative to the load scale
 };
 
 /// Counters and timing reported in summary.json.
 struct SolverStats {
-  long steps = 0;              ///< accepted steps or converged equilibria
+  long steps = 0;  ///< accepted steps or converged equilibria
   long rejected_steps = 0;
   long newton_iterations = 0;
   long force_evaluations = 0;
   long jacobian_evaluations = 0;
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;
-  std::string status = "ok";   ///< "ok" or "diverged"
-  std::string message;         ///< diagnosis when diverged
+  std::string status = "ok";  ///< "ok" or "diverged"
+  std::string message;        ///< diagnosis when diverged
 };
 
 /// Called at t = 0, at each output time and at the end, with the forces at that state.

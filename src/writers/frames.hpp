@@ -10,9 +10,9 @@ namespace finseg {
 
 /// One recorded configuration of all bodies.
 struct Frame {
-  double t = 0;                 ///< time (s) or drive displacement (m) for quasi-static runs
-  std::vector<Vec3> p_W;        ///< body centroids, m
-  std::vector<Mat3> R_WB;       ///< body orientations
+  double t = 0;                        ///< time (s) or drive displacement (m) for quasi-static runs
+  std::vector<Vec3> p_W;               ///< body centroids, m
+  std::vector<Mat3> R_WB;              ///< body orientations
   std::vector<Vec3> contact_points_W;  ///< active contact points, m (may be empty)
 };
 

@@ -75,7 +75,8 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
   g += "set border 3 lw 1.2 lc rgb '#333333'\n";
   g += "set tics nomirror out\n";
   g += "set mxtics 2\nset mytics 2\n";
-  g += "set grid xtics ytics mxtics mytics back lt 1 dt solid lw 1 lc rgb '#dedede', lt 1 dt solid lw 0.6 lc rgb '#f0f0f0'\n";
+  g += "set grid xtics ytics mxtics mytics back lt 1 dt solid lw 1 lc rgb '#dedede', lt 1 dt solid "
+       "lw 0.6 lc rgb '#f0f0f0'\n";
   g += "set key outside below center horizontal noreverse samplen 3 spacing 1.2 width 2\n";
   g += "set style textbox opaque noborder margins 1, 1\n";
   g += "set autoscale xfix\nset autoscale yfix\n";
