@@ -209,6 +209,12 @@ TEST(CreaseLaw, RelaxationShiftsRestAngleLogarithmically) {
     EXPECT_NEAR(law.evaluate(phi, h, t).moment, 0.01 * (phi + delta - 150 * kDegToRad), 1e-15);
     EXPECT_NEAR(law.evaluate(phi, h, t).moment, fd_energy(law, phi, h, t), 1e-9);
   }
+  // A linear law in the signed angle folded the negative way relaxes towards flat too.
+  const RelaxingCreaseLaw neg(std::make_shared<LinearCreaseLaw>(0.01, -150 * kDegToRad), c, tau,
+                              age, age_ref);
+  const double d1 = c * std::log((1 + (age + 100) / tau) / (1 + age_ref / tau));
+  EXPECT_NEAR(neg.rest_angle(h, 100), -150 * kDegToRad + d1, 1e-13);
+  EXPECT_FALSE(neg.direction_relative());
   EXPECT_THROW(RelaxingCreaseLaw bad(base, c, 0, age, age_ref), InputError);
   EXPECT_THROW(RelaxingCreaseLaw bad(base, c, tau, -1, age_ref), InputError);
 }

@@ -74,18 +74,18 @@ T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHist
   Mat3T<T> R_FE = R_WF.transpose() * R_WE;
   Vec6 K = e.K;
   Vec3T<T> couple_W = Vec3T<T>::Zero();  // on the inner body
-  // Crease: U = U_law(phi) + 1/2 th^T K th with phi = s alpha the fold angle in the crease's
-  // direction and th = log(R_y(-alpha) R_FE) the rotation left after taking out the fold,
-  // expressed in F turned by the fold (K_th2 unused). A world rotation dphi of the inner
-  // body moves alpha by grad . dphi and R_y(-alpha) R_FE on the left by
-  // R_y(-alpha) R_WF^T dphi - (grad . dphi) e_y, so with g = Jl^-T(th) K th
+  // Crease: U = U_law(phi) + 1/2 th^T K th with phi = s alpha the law's angle
+  // (crease_law.hpp: s = +-1) and th = log(R_y(-alpha) R_FE) the rotation left after taking out the
+  // fold, expressed in F turned by the fold (K_th2 unused). A world rotation dphi of the inner body
+  // moves alpha by grad . dphi and R_y(-alpha) R_FE on the left by R_y(-alpha) R_WF^T dphi - (grad
+  // . dphi) e_y, so with g = Jl^-T(th) K th
   //   dU/dphi = (M_alpha - g_y) grad + R_WF R_y(alpha) g,
   // which makes the couple the exact gradient of the energy (symmetric Jacobian).
   Mat3T<T> R_F_fold = Mat3T<T>::Identity();  // F turned by the fold about its y axis
   T M_alpha(0);
   Vec3T<T> grad_alpha = Vec3T<T>::Zero();
   if (crease != nullptr) {
-    const double s = crease_direction(*crease);
+    const double s = law_direction(*crease);
     const T alpha = fold_angle<T>(R_WE, R_WF, hist.fold_angle);
     const double phi = s * value_of(alpha);
     const MomentSample m = crease->law->evaluate(phi, hist, t);

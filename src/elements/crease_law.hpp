@@ -1,14 +1,16 @@
 // Crease laws: the moment about a crease line as a function of its fold angle and history.
 //
 // Angle convention (docs/crease-data.md). The element measures the exact signed fold angle
-// alpha (rad) of E relative to F about F's y axis, 0 for the flat sheet. A crease has a
-// fold direction s = +1 or -1: the sign of CreaseDef::initial_fold_angle (+1 when that is
-// 0). Every law is written in the crease's own direction,
-//     phi = s * alpha   (rad; phi > 0: folded the way the crease was folded),
-// and the element maps back: M_alpha = s * M_phi, dM_alpha/dalpha = dM_phi/dphi. So one
-// law serves peaks and valleys alike. Measured data use the paper's opening angle
-//     theta = pi - phi  (0: folded flat shut, pi: flat sheet),
-// the dihedral angle between the two flaps, in degrees in files.
+// alpha (rad) of E relative to F about F's y axis, 0 for the flat sheet, unwrapped over
+// turns. A crease has a fold direction s = +1 or -1: the sign of
+// CreaseDef::initial_fold_angle (+1 when that is 0). A law is written either
+//  - in the signed angle alpha itself (direction_relative() == false; LinearCreaseLaw,
+//    whose rest angle then carries the sign of the fold), or
+//  - in the crease's own direction, phi = s * alpha (direction_relative() == true; measured
+//    laws), so that one law serves peaks and valleys alike. The element maps back:
+//    M_alpha = s * M_phi, dM_alpha/dalpha = dM_phi/dphi.
+// Measured data use the paper's opening angle theta = pi - phi (0: folded flat shut, pi:
+// flat sheet), the dihedral angle between the two flaps, in degrees in files.
 #pragma once
 
 #include <string>
@@ -34,8 +36,9 @@ struct OpeningRule {
   double closed_below = 30 * kDegToRad;
 };
 
-/// Interface of every crease law. phi is the fold angle in the crease's own direction (rad,
-/// see above); `history` holds the crease's opening count; t is the simulated time (s).
+/// Interface of every crease law. `phi` is the law's angle (rad, see above): alpha, or
+/// s * alpha for direction-relative laws; `history` holds the crease's opening count; t is
+/// the simulated time (s; in static runs the solver's load or drive parameter).
 class CreaseLaw {
  public:
   virtual ~CreaseLaw() = default;
@@ -49,6 +52,8 @@ class CreaseLaw {
   virtual double energy(double phi, const ElementHistory& history, double t) const;
   /// Thresholds for counting openings (commit_crease_history).
   virtual OpeningRule opening_rule() const { return {}; }
+  /// True: the law's angle is phi = s * alpha (the crease's own direction); false: alpha.
+  virtual bool direction_relative() const { return false; }
 };
 
 /// Fold direction of a crease: the sign of its initial fold angle, +1 when flat.
@@ -56,13 +61,19 @@ inline double crease_direction(const CreaseDef& crease) {
   return crease.initial_fold_angle < 0 ? -1.0 : 1.0;
 }
 
+/// The sign the element applies to alpha before calling the law: s for direction-relative
+/// laws, +1 for laws in the signed angle.
+inline double law_direction(const CreaseDef& crease) {
+  return crease.law && crease.law->direction_relative() ? crease_direction(crease) : 1.0;
+}
+
 /// Opening angle theta = pi - phi (rad) of the fold angle phi in the crease's direction.
 inline double opening_angle(double phi) {
   return kPi - phi;
 }
 
-/// M = k (phi - rest): the linear crease. `rest_angle` is the fold angle of zero moment in
-/// the crease's own direction (rad), e.g. |initial fold angle| for a crease at rest.
+/// M = k (alpha - rest): the linear crease, in the signed fold angle. `rest_angle` is the
+/// signed fold angle of zero moment (rad), e.g. the initial fold angle for a crease at rest.
 class LinearCreaseLaw final : public CreaseLaw {
  public:
   LinearCreaseLaw(double stiffness, double rest_angle, OpeningRule rule = {});

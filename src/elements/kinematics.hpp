@@ -18,9 +18,7 @@ struct BodyKin {
   Vec3T<T> w_W;
 
   Vec3T<T> point_W(const Vec3& r_B) const { return p_W + R_WB * r_B.cast<T>(); }
-  Vec3T<T> point_velocity_W(const Vec3& r_B) const {
-    return v_W + w_W.cross(R_WB * r_B.cast<T>());
-  }
+  Vec3T<T> point_velocity_W(const Vec3& r_B) const { return v_W + w_W.cross(R_WB * r_B.cast<T>()); }
 };
 
 /// Resultant force and moment about the body centroid, world frame.
@@ -40,14 +38,18 @@ template <int N>
 using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
 
 /// Value of an autodiff or plain scalar.
-inline double value_of(double x) { return x; }
+inline double value_of(double x) {
+  return x;
+}
 template <class D>
 double value_of(const Eigen::AutoDiffScalar<D>& x) {
   return x.value();
 }
 
 /// Lifts a scalar function known by its value f and slope df at value_of(x) to type T.
-inline double lift(double /*x*/, double f, double /*df*/) { return f; }
+inline double lift(double /*x*/, double f, double /*df*/) {
+  return f;
+}
 template <class D>
 Eigen::AutoDiffScalar<D> lift(const Eigen::AutoDiffScalar<D>& x, double f, double df) {
   return Eigen::AutoDiffScalar<D>(f, df * x.derivatives());

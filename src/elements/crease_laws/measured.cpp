@@ -205,17 +205,22 @@ double RelaxingCreaseLaw::shift(double t) const {
   return c_ * (std::log1p(since / tau_) - std::log1p(age_ref_ / tau_));
 }
 
+double RelaxingCreaseLaw::signed_shift(const ElementHistory& history, double t) const {
+  if (base_->direction_relative()) return shift(t);
+  return base_->rest_angle(history, t) < 0 ? -shift(t) : shift(t);
+}
+
 MomentSample RelaxingCreaseLaw::evaluate(double phi, const ElementHistory& history,
                                          double t) const {
-  return base_->evaluate(phi + shift(t), history, t);
+  return base_->evaluate(phi + signed_shift(history, t), history, t);
 }
 
 double RelaxingCreaseLaw::rest_angle(const ElementHistory& history, double t) const {
-  return base_->rest_angle(history, t) - shift(t);
+  return base_->rest_angle(history, t) - signed_shift(history, t);
 }
 
 double RelaxingCreaseLaw::energy(double phi, const ElementHistory& history, double t) const {
-  return base_->energy(phi + shift(t), history, t);
+  return base_->energy(phi + signed_shift(history, t), history, t);
 }
 
 std::string RelaxingCreaseLaw::describe() const {

@@ -55,6 +55,7 @@ class MeasuredCreaseLaw final : public CreaseLaw {
   double rest_angle(const ElementHistory& history, double t) const override;  ///< NaN: none
   double energy(double phi, const ElementHistory& history, double t) const override;
   OpeningRule opening_rule() const override { return options_.rule; }
+  bool direction_relative() const override { return true; }
   std::string describe() const override;
 
   /// M(theta) and dM/dtheta in the data's terms (opening angle theta, rad) for a given
@@ -79,7 +80,8 @@ class MeasuredCreaseLaw final : public CreaseLaw {
 /// Relaxation of a fold (paper/polymer films open slowly after folding): the rest opening
 /// angle grows logarithmically with the time since folding,
 ///     theta_rest(t) = theta_rest(t_ref) + c ln((1 + (age + t)/tau) / (1 + age_ref/tau)),
-/// applied to any law as a shift of the angle: M(phi, t) = M_base(phi + Delta(t)), with
+/// applied to any law as a shift of the angle: M(phi, t) = M_base(phi + Delta(t)) (for a law
+/// in the signed angle, phi - sign(rest) Delta: the fold opens towards flat), with
 /// Delta(t) = c ln((1 + (age + t)/tau) / (1 + age_ref/tau)). c: rad per e-fold of time (> 0:
 /// the crease opens), tau > 0 (s), age >= 0: age of the crease at t = 0 (s), age_ref >= 0:
 /// age at which the base law holds unshifted (s; usually the age when it was measured).
@@ -93,9 +95,14 @@ class RelaxingCreaseLaw final : public CreaseLaw {
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
   OpeningRule opening_rule() const override { return base_->opening_rule(); }
+  bool direction_relative() const override { return base_->direction_relative(); }
   std::string describe() const override;
 
  private:
+  /// The shift in the base law's angle: +Delta for direction-relative laws; for laws in
+  /// the signed angle, the opening direction is taken from the sign of the base's rest angle.
+  double signed_shift(const ElementHistory& history, double t) const;
+
   std::shared_ptr<const CreaseLaw> base_;
   double c_, tau_, age_, age_ref_;
 };
