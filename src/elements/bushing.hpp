@@ -74,13 +74,26 @@ T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHist
   Mat3T<T> R_FE = R_WF.transpose() * R_WE;
   Vec6 K = e.K;
   Vec3T<T> couple_W = Vec3T<T>::Zero();  // on the inner body
+  // Crease: U = U_law(phi) + 1/2 th^T K th with phi = s alpha the law's angle
+  // (crease_law.hpp: s = +-1) and th = log(R_y(-alpha) R_FE) the rotation left after taking out the
+  // fold, expressed in F turned by the fold (K_th2 unused). A world rotation dphi of the inner body
+  // moves alpha by grad . dphi and R_y(-alpha) R_FE on the left by R_y(-alpha) R_WF^T dphi - (grad
+  // . dphi) e_y, so with g = Jl^-T(th) K th
+  //   dU/dphi = (M_alpha - g_y) grad + R_WF R_y(alpha) g,
+  // which makes the couple the exact gradient of the energy (symmetric Jacobian).
+  Mat3T<T> R_F_fold = Mat3T<T>::Identity();  // F turned by the fold about its y axis
+  T M_alpha(0);
+  Vec3T<T> grad_alpha = Vec3T<T>::Zero();
   if (crease != nullptr) {
+    const double s = law_direction(*crease);
     const T alpha = fold_angle<T>(R_WE, R_WF, hist.fold_angle);
-    const MomentSample m = crease->law->evaluate(value_of(alpha), hist, t);
-    const T M = lift(alpha, m.moment, m.stiffness);
-    couple_W -= M * fold_angle_gradient<T>(R_WE, R_WF);
-    // The remaining rotation after taking out the fold carries the other two springs.
-    R_FE = so3_exp<T>(Vec3T<T>(T(0), -alpha, T(0))) * R_FE;
+    const double phi = s * value_of(alpha);
+    const MomentSample m = crease->law->evaluate(phi, hist, t);
+    M_alpha = lift(alpha, s * m.moment, m.stiffness);
+    energy += lift(alpha, crease->law->energy(phi, hist, t), s * m.moment);
+    grad_alpha = fold_angle_gradient<T>(R_WE, R_WF);
+    R_F_fold = so3_exp<T>(Vec3T<T>(T(0), alpha, T(0)));
+    R_FE = R_F_fold.transpose() * R_FE;
     K[4] = 0;
   }
   const Vec3T<T> th = so3_log<T>(R_FE);
@@ -89,8 +102,10 @@ T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHist
     Kth[i] = K[3 + i] * th[i];
     energy += T(0.5) * Kth[i] * th[i];
   }
+  const Vec3T<T> g = so3_left_jacobian_inv<T>(th).transpose() * Kth;
   const Vec3T<T> damp_F(e.C[3] * wrel_F[0], e.C[4] * wrel_F[1], e.C[5] * wrel_F[2]);
-  couple_W -= R_WF * (so3_left_jacobian_inv<T>(th).transpose() * Kth + damp_F);
+  couple_W -= R_WF * (R_F_fold * g + damp_F);
+  if (crease != nullptr) couple_W -= (M_alpha - g[1]) * grad_alpha;
   on_A.tau_W += couple_W;
   on_B.tau_W -= couple_W;
   return energy;

@@ -1,0 +1,172 @@
+#include "identification/bending.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace finseg {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+double to_number(const std::string& text, const std::string& file, const std::string& field) {
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) {
+    throw InputError(file, field, fmt::format("'{}' is not a number", text));
+  }
+  if (!std::isfinite(v)) throw InputError(file, field, "must be finite (NaN/inf given)");
+  return v;
+}
+
+}  // namespace
+
+CantileverData parse_cantilever_data(std::istream& in, const std::string& file) {
+  CantileverData d;
+  d.source = file;
+  std::string raw;
+  int line = 0;
+  std::vector<std::string> header;
+  int col_f = -1, col_x = -1;
+  double x_scale = 1;
+  while (std::getline(in, raw)) {
+    ++line;
+    const std::string t = trim(raw);
+    if (t.empty()) continue;
+    if (t[0] == '#') {
+      const auto colon = t.find(':');
+      if (colon == std::string::npos) continue;
+      const std::string key = trim(t.substr(1, colon - 1));
+      const std::string value = trim(t.substr(colon + 1));
+      std::optional<double>* slot = key == "length_m"      ? &d.length
+                                    : key == "width_m"     ? &d.width
+                                    : key == "thickness_m" ? &d.thickness
+                                                           : nullptr;
+      if (slot) {
+        const double v = to_number(value, file, fmt::format("line {}: {}", line, key));
+        if (!(v > 0)) {
+          throw InputError(file, fmt::format("line {}: {}", line, key),
+                           fmt::format("{} must be > 0 m", v));
+        }
+        *slot = v;
+      }
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream ss(t);
+    std::string c;
+    while (std::getline(ss, c, ',')) cells.push_back(trim(c));
+    if (header.empty()) {
+      header = cells;
+      for (size_t i = 0; i < cells.size(); ++i) {
+        if (cells[i] == "force_N") {
+          col_f = static_cast<int>(i);
+        } else if (cells[i] == "tip_displacement_m") {
+          col_x = static_cast<int>(i);
+        } else if (cells[i] == "tip_displacement_mm") {
+          col_x = static_cast<int>(i);
+          x_scale = 1e-3;
+        } else {
+          throw InputError(file, fmt::format("line {}: column '{}'", line, cells[i]),
+                           "unknown column; allowed: force_N, tip_displacement_m | "
+                           "tip_displacement_mm");
+        }
+      }
+      if (col_f < 0 || col_x < 0) {
+        throw InputError(file, fmt::format("line {}: header", line),
+                         "needs columns force_N and tip_displacement_m (or _mm)");
+      }
+      continue;
+    }
+    if (cells.size() != header.size()) {
+      throw InputError(
+          file, fmt::format("line {}", line),
+          fmt::format("has {} values, the header has {} columns", cells.size(), header.size()));
+    }
+    const double F =
+        to_number(cells[static_cast<size_t>(col_f)], file, fmt::format("line {}: force_N", line));
+    const double x = x_scale * to_number(cells[static_cast<size_t>(col_x)], file,
+                                         fmt::format("line {}: {}", line, header[col_x]));
+    if (F < 0 || x < 0) {
+      throw InputError(file, fmt::format("line {}", line),
+                       "force and displacement must be >= 0 (measured along the load)");
+    }
+    d.force.push_back(F);
+    d.deflection.push_back(x);
+  }
+  if (header.empty()) {
+    throw InputError(file, "header", "no header; expected force_N, tip_displacement_m");
+  }
+  return d;
+}
+
+CantileverData read_cantilever_data(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "file", "cannot open cantilever data file");
+  return parse_cantilever_data(in, path);
+}
+
+double chain_compliance_factor(int segments) {
+  const double n = segments;
+  return 1.0 - 1.0 / (4.0 * n * n);
+}
+
+BendingIdentification identify_bending(const CantileverData& data, double length, int segments,
+                                       std::optional<double> width,
+                                       std::optional<double> thickness) {
+  const std::string& f = data.source;
+  if (!(length > 0) || !std::isfinite(length)) {
+    throw InputError(f, "length",
+                     fmt::format("{} m; must be > 0 (free length clamp to load)", length));
+  }
+  if (segments < 1 || segments > 1000000) {
+    throw InputError(f, "segments", fmt::format("{}; must be 1..1000000", segments));
+  }
+  double sff = 0, sfx = 0;
+  int loaded = 0;
+  for (size_t i = 0; i < data.force.size(); ++i) {
+    sff += data.force[i] * data.force[i];
+    sfx += data.force[i] * data.deflection[i];
+    loaded += data.force[i] > 0;
+  }
+  if (loaded < 1 || !(sfx > 0)) {
+    throw InputError(f, "data", "need at least one point with force > 0 and deflection > 0");
+  }
+  BendingIdentification r;
+  r.compliance = sfx / sff;
+  double ss = 0;
+  for (size_t i = 0; i < data.force.size(); ++i) {
+    const double e = data.deflection[i] - r.compliance * data.force[i];
+    ss += e * e;
+    r.max_slope = std::max(r.max_slope, data.deflection[i] / length);
+  }
+  r.rms_residual = std::sqrt(ss / static_cast<double>(data.force.size()));
+  r.length = length;
+  r.EI_continuum = length * length * length / (3 * r.compliance);
+  r.segments = segments;
+  r.cell_length = length / segments;
+  r.EI_chain = r.EI_continuum * chain_compliance_factor(segments);
+  r.joint_stiffness = r.EI_chain / r.cell_length;
+  if (width && thickness) {
+    r.youngs_modulus = 12 * r.EI_continuum / (*width * std::pow(*thickness, 3));
+  }
+  return r;
+}
+
+}  // namespace finseg
