@@ -18,11 +18,11 @@ void commit_contact_history(const Model& model, State& state);
 
 /// What the contact probes record.
 struct ContactSummary {
-  int active = 0;                    ///< number of contact points with positive penetration
-  double total_normal_force = 0;     ///< N
-  double total_friction_force = 0;   ///< N (sum of magnitudes)
-  double max_penetration = 0;        ///< m
-  std::vector<Vec3> points_W;        ///< active contact points, m
+  int active = 0;                   ///< number of contact points with positive penetration
+  double total_normal_force = 0;    ///< N
+  double total_friction_force = 0;  ///< N (sum of magnitudes)
+  double max_penetration = 0;       ///< m
+  std::vector<Vec3> points_W;       ///< active contact points, m
 };
 ContactSummary contact_summary(const Model& model, const State& state);
 

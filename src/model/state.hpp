@@ -17,14 +17,15 @@ struct ElementHistory {
 };
 
 struct State {
-  double t = 0;                  ///< s (static solver: load or drive parameter)
-  std::vector<Vec3> p_W;         ///< centroid positions, m
-  std::vector<Mat3> R_WB;        ///< orientations
-  std::vector<Vec3> v_W;         ///< centroid velocities, m/s
-  std::vector<Vec3> w_W;         ///< angular velocities in world frame, rad/s
-  std::vector<double> drive_s;   ///< displacement of each drive, m
-  double load_scale = 1.0;       ///< multiplies loads and gravity (static load stepping)
+  double t = 0;                         ///< s (static solver: load or drive parameter)
+  std::vector<Vec3> p_W;                ///< centroid positions, m
+  std::vector<Mat3> R_WB;               ///< orientations
+  std::vector<Vec3> v_W;                ///< centroid velocities, m/s
+  std::vector<Vec3> w_W;                ///< angular velocities in world frame, rad/s
+  std::vector<double> drive_s;          ///< displacement of each drive, m
+  double load_scale = 1.0;              ///< multiplies loads and gravity (static load stepping)
   std::vector<ElementHistory> history;  ///< one per force element
+  ContactState contact;                 ///< contact points' history (friction anchors)
 };
 
 /// State at t = 0: initial poses, zero velocities, initial crease angles.
