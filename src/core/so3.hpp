@@ -44,7 +44,11 @@ Vec3T<T> so3_log(const Mat3T<T>& R) {
   using std::sqrt;
   const Vec3T<T> v(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));  // 2 sin(th) axis
   const T c = (R.trace() - T(1)) / T(2);
-  const T s2 = v.norm();  // 2 sin(th)
+  const T s2sq = v.squaredNorm();
+  if (c > T(0) && s2sq < T(1e-12)) {
+    return (T(0.5) + s2sq / T(48)) * v;  // series of th / (2 sin th); no sqrt at th = 0
+  }
+  const T s2 = sqrt(s2sq);  // 2 sin(th)
   if (c > T(-0.9)) {
     const T th = atan2(s2 / T(2), c);
     T scale;

@@ -23,11 +23,11 @@ struct FoldSpec {
 
 /// Optional identified values that replace the material-derived ones (whole sheet width).
 struct StiffnessOverride {
-  std::optional<double> bending_rigidity;   ///< EI about y, N m^2
-  std::optional<double> twist_rigidity;     ///< GJ about x, N m^2
-  std::optional<double> inplane_rigidity;   ///< EI about z, N m^2
-  std::optional<double> axial_rigidity;     ///< EA, N
-  std::optional<double> shear_rigidity;     ///< kappa G A, N
+  std::optional<double> bending_rigidity;  ///< EI about y, N m^2
+  std::optional<double> twist_rigidity;    ///< GJ about x, N m^2
+  std::optional<double> inplane_rigidity;  ///< EI about z, N m^2
+  std::optional<double> axial_rigidity;    ///< EA, N
+  std::optional<double> shear_rigidity;    ///< kappa G A, N
 };
 
 /// Everything needed to generate a sheet model. Lengths in m, modulus in Pa, density kg/m^3.
@@ -45,7 +45,8 @@ struct SheetSpec {
   bool clamp_start = false;        ///< clamp the sheet at s = 0 (cantilever root)
   double damping_time = 0;         ///< stiffness-proportional damping C = damping_time * K, s
   StiffnessOverride overrides;
-  Vec3 origin_W = Vec3::Zero();    ///< world position of material point (0, 0)
+  Vec3 origin_W = Vec3::Zero();  ///< world position of material point (0, 0)
+  Mat3 R_W0 = Mat3::Identity();  ///< orientation of the first panel (x along s, y across)
 };
 
 /// Builds bodies, elements and initial poses. Throws InputError on impossible specs.

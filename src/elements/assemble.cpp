@@ -1,0 +1,121 @@
+#include "elements/assemble.hpp"
+
+#include "collision/contact_forces.hpp"
+#include "elements/assembler.hpp"
+#include "elements/bushing.hpp"
+#include "elements/crease_history.hpp"
+
+namespace finseg {
+namespace {
+
+void add_force_elements(const Model& model, const State& state, Assembler& as) {
+  for (size_t k = 0; k < model.elements.size(); ++k) {
+    const ElementDef& e = model.elements[k];
+    const CreaseDef* crease = e.crease >= 0 ? &model.creases[e.crease] : nullptr;
+    const ElementHistory& h = state.history[k];
+    as.pair(e.inner, e.outer, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
+      return element_kernel(e, crease, h, state.t, A, B, wa, wb);
+    });
+  }
+}
+
+void add_loads_and_gravity(const Model& model, const State& state, Assembler& as) {
+  const double lambda = state.load_scale;
+  for (const LoadDef& l : model.loads) {
+    if (!l.follower) {
+      // A dead load: its moment arm still turns with the body.
+      as.single(l.body, [&](const auto& A, auto& w) {
+        using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
+        const Vec3T<T> f = (lambda * l.force).cast<T>();
+        w.add_force_at(f, A.point_W(l.point_B), A.p_W);
+        w.tau_W += (lambda * l.moment).cast<T>();
+        return T(-f.dot(A.point_W(l.point_B)));
+      });
+    } else {
+      as.single(l.body, [&](const auto& A, auto& w) {
+        using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
+        const Vec3T<T> f = A.R_WB * (lambda * l.force).cast<T>();
+        w.add_force_at(f, A.point_W(l.point_B), A.p_W);
+        w.tau_W += A.R_WB * (lambda * l.moment).cast<T>();
+        return T(0);  // follower loads have no potential
+      });
+    }
+  }
+  if (model.gravity_W.squaredNorm() > 0) {
+    for (size_t i = 0; i < model.bodies.size(); ++i) {
+      const Vec3 f = lambda * model.bodies[i].mass * model.gravity_W;
+      Wrench<double> w;
+      w.f_W = f;
+      as.add(static_cast<int>(i), w);
+      as.add_energy(-f.dot(state.p_W[i]));
+    }
+  }
+}
+
+double drive_rate(const DriveDef& d, const State& state, int i) {
+  return (d.travel > 0 && state.drive_s[i] >= d.travel) ? 0.0 : d.speed;
+}
+
+void add_drives(const Model& model, const State& state, Assembler& as) {
+  for (size_t i = 0; i < model.drives.size(); ++i) {
+    const DriveDef& d = model.drives[i];
+    const Vec3 target = d.start_W + state.drive_s[i] * d.direction_W;
+    const Vec3 target_v = drive_rate(d, state, static_cast<int>(i)) * d.direction_W;
+    as.single(d.body, [&](const auto& A, auto& w) {
+      using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
+      const Vec3T<T> P = A.point_W(d.point_B);
+      const Vec3T<T> stretch = P - target.cast<T>();
+      const Vec3T<T> f =
+          -d.stiffness * stretch - d.damping * (A.point_velocity_W(d.point_B) - target_v.cast<T>());
+      w.add_force_at(f, P, A.p_W);
+      return T(0.5 * d.stiffness) * stretch.squaredNorm();
+    });
+  }
+}
+
+}  // namespace
+
+void compute_forces(const Model& model, const State& state, BodyForces& out, ForceJacobian* jac) {
+  const size_t n = model.bodies.size();
+  out.f_W.assign(n, Vec3::Zero());
+  out.tau_W.assign(n, Vec3::Zero());
+  out.potential_energy = 0;
+  Assembler as(model, state, out, jac != nullptr);
+  add_force_elements(model, state, as);
+  add_loads_and_gravity(model, state, as);
+  add_drives(model, state, as);
+  add_contact_forces(model, state, as);
+  if (jac) {
+    jac->dq.resize(model.num_dofs, model.num_dofs);
+    jac->dv.resize(model.num_dofs, model.num_dofs);
+    jac->dq.setFromTriplets(as.dq_triplets.begin(), as.dq_triplets.end());
+    jac->dv.setFromTriplets(as.dv_triplets.begin(), as.dv_triplets.end());
+  }
+}
+
+Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces) {
+  Eigen::VectorXd g(model.num_dofs);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    g.segment<3>(d) = forces.f_W[i];
+    g.segment<3>(d + 3) = forces.tau_W[i];
+  }
+  return g;
+}
+
+Vec3 drive_force(const Model& model, const State& state, int i) {
+  const DriveDef& d = model.drives[i];
+  const Vec3 P = state.p_W[d.body] + state.R_WB[d.body] * d.point_B;
+  const Vec3 vP = state.v_W[d.body] + state.w_W[d.body].cross(state.R_WB[d.body] * d.point_B);
+  const Vec3 target = d.start_W + state.drive_s[i] * d.direction_W;
+  const Vec3 target_v = drive_rate(d, state, i) * d.direction_W;
+  return -d.stiffness * (P - target) - d.damping * (vP - target_v);
+}
+
+void commit_history(const Model& model, State& state) {
+  commit_crease_history(model, state);
+  commit_contact_history(model, state);
+}
+
+}  // namespace finseg

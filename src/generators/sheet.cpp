@@ -1,0 +1,261 @@
+// Sheet generator. Joint placement: each panel is cut into cells; a bending joint sits at
+// every cell centre and stands for exactly that cell (stiffness EI/h), so the bodies run
+// from one cell centre to the next, with half cells next to creases and free or clamped
+// ends. This is the midpoint rule for the curvature integral: second-order convergence.
+#include "generators/sheet.hpp"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/so3.hpp"
+
+namespace finseg {
+namespace {
+
+constexpr double kShearCorrection = 5.0 / 6.0;
+
+void check_positive(double v, const char* field, const char* unit) {
+  if (!(v > 0) || !std::isfinite(v)) {
+    throw InputError("<api>", field, fmt::format("{} {}; must be finite and > 0", v, unit));
+  }
+}
+
+void validate_spec(const SheetSpec& s) {
+  check_positive(s.length, "sheet.length", "m");
+  check_positive(s.width, "sheet.width", "m");
+  check_positive(s.thickness, "sheet.thickness", "m");
+  check_positive(s.youngs_modulus, "material.youngs_modulus", "Pa");
+  check_positive(s.density, "material.density", "kg/m^3");
+  check_positive(s.crease_refinement, "discretisation.crease_refinement", "(ratio)");
+  if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5)) {
+    throw InputError("<api>", "material.poisson_ratio",
+                     fmt::format("{}; allowed range [0, 0.5)", s.poisson_ratio));
+  }
+  if (s.cells_along < 1 || s.cells_across < 1) {
+    throw InputError("<api>", "discretisation", "segments along and across must be >= 1");
+  }
+  if (!s.cell_weights.empty()) {
+    if (!s.folds.empty()) {
+      throw InputError("<api>", "discretisation.cell_weights", "only for sheets without folds");
+    }
+    if (static_cast<int>(s.cell_weights.size()) != s.cells_along) {
+      throw InputError("<api>", "discretisation.cell_weights",
+                       "needs one weight per segment along the length");
+    }
+    for (double w : s.cell_weights) check_positive(w, "discretisation.cell_weights", "");
+  }
+  double prev = 0;
+  for (size_t i = 0; i < s.folds.size(); ++i) {
+    const FoldSpec& f = s.folds[i];
+    const std::string field = fmt::format("folds[{}]", i);
+    if (!(f.s > prev && f.s < s.length)) {
+      throw InputError(
+          "<api>", field + ".s",
+          fmt::format("{} m; folds must be sorted and inside (0, {}) m", f.s, s.length));
+    }
+    if (!(std::abs(f.angle) <= kPi)) {
+      throw InputError("<api>", field + ".angle", "fold angle must lie in [-180, 180] deg");
+    }
+    if (!f.law) throw InputError("<api>", field + ".law", "every fold needs a crease law");
+    prev = f.s;
+  }
+  const int panels = static_cast<int>(s.folds.size()) + 1;
+  for (int p : s.fixed_panels) {
+    if (p < 0 || p >= panels) {
+      throw InputError("<api>", "fixtures.fixed_panels",
+                       fmt::format("panel {} does not exist (1..{})", p + 1, panels));
+    }
+  }
+  if (!(s.damping_time >= 0)) throw InputError("<api>", "damping_time", "must be >= 0 s");
+}
+
+// Cell boundaries of one panel [a, b]: uniform, weighted, or graded towards creases.
+std::vector<double> panel_cells(const SheetSpec& s, double a, double b, bool crease_a,
+                                bool crease_b) {
+  const int n = s.cells_along;
+  std::vector<double> w(n, 1.0);
+  if (!s.cell_weights.empty()) {
+    w = s.cell_weights;
+  } else if (s.crease_refinement != 1.0 && n > 1) {
+    // Geometric grading: cells next to a crease are 1/refinement of the middle cell.
+    for (int j = 0; j < n; ++j) {
+      const double da = crease_a ? j : n;
+      const double db = crease_b ? n - 1 - j : n;
+      const double d = std::min(da, db) / std::max(1.0, (n - 1) / 2.0);
+      w[j] = std::pow(s.crease_refinement, std::min(1.0, d)) / s.crease_refinement;
+    }
+  }
+  double total = 0;
+  for (double x : w) total += x;
+  std::vector<double> bounds{a};
+  for (double x : w) bounds.push_back(bounds.back() + (b - a) * x / total);
+  bounds.back() = b;
+  return bounds;
+}
+
+struct Joint {
+  double s;       // position along the sheet, m
+  double h;       // length of sheet the joint stands for, m
+  int fold = -1;  // index into spec.folds for crease joints
+};
+
+Vec6 joint_stiffness(const SheetSpec& s, double line, double h, double share, bool across,
+                     int rows) {
+  const double E = s.youngs_modulus, t = s.thickness;
+  const double G = E / (2 * (1 + s.poisson_ratio));
+  // Plate torsion is carried half by each direction when both exist (docs/stiffness.md).
+  const double twist = (rows > 1 ? 6.0 : 3.0);
+  Vec6 k;
+  k << E * line * t / h, kShearCorrection * G * line * t / h, kShearCorrection * G * line * t / h,
+      G * line * t * t * t / twist / h, E * line * t * t * t / 12 / h,
+      E * t * line * line * line / 12 / h;
+  if (!across) {
+    const StiffnessOverride& o = s.overrides;
+    if (o.axial_rigidity) k[0] = *o.axial_rigidity * share / h;
+    if (o.shear_rigidity) k[1] = k[2] = *o.shear_rigidity * share / h;
+    if (o.twist_rigidity) k[3] = *o.twist_rigidity * share / h;
+    if (o.bending_rigidity) k[4] = *o.bending_rigidity * share / h;
+    if (o.inplane_rigidity) k[5] = *o.inplane_rigidity * share * share * share / h;
+  }
+  return k;
+}
+
+Mat3 rot_y(double a) {
+  return so3_exp<double>(Vec3(0, a, 0));
+}
+
+}  // namespace
+
+Model build_sheet_model(const SheetSpec& spec) {
+  validate_spec(spec);
+  Model m;
+  m.sheet = {spec.length,         spec.width,         spec.thickness,
+             spec.youngs_modulus, spec.poisson_ratio, spec.density};
+
+  // Panels, their cells and the joints along the sheet.
+  const int panels = static_cast<int>(spec.folds.size()) + 1;
+  std::vector<double> panel_start{0.0};
+  for (const FoldSpec& f : spec.folds) panel_start.push_back(f.s);
+  panel_start.push_back(spec.length);
+  std::vector<Joint> joints;
+  for (int p = 0; p < panels; ++p) {
+    const auto b = panel_cells(spec, panel_start[p], panel_start[p + 1], p > 0, p < panels - 1);
+    for (size_t j = 0; j + 1 < b.size(); ++j)
+      joints.push_back({0.5 * (b[j] + b[j + 1]), b[j + 1] - b[j]});
+    if (p < panels - 1) {
+      const double h = 0.5 * std::min(b[b.size() - 1] - b[b.size() - 2],
+                                      panel_cells(spec, panel_start[p + 1], panel_start[p + 2],
+                                                  true, p + 1 < panels - 1)[1] -
+                                          panel_start[p + 1]);
+      joints.push_back({panel_start[p + 1], h, p});
+    }
+  }
+  // Body boundaries along s: sheet ends and every joint.
+  std::vector<double> bs{0.0};
+  for (const Joint& j : joints) bs.push_back(j.s);
+  bs.push_back(spec.length);
+  const int n_along = static_cast<int>(bs.size()) - 1;
+  const int rows = spec.cells_across;
+  const double bw = spec.width / rows;
+
+  // Panel frames: cumulative rotation about y, panel origins chained along x.
+  std::vector<Mat3> R_panel(panels);
+  std::vector<Vec3> o_panel(panels);
+  R_panel[0] = spec.R_W0;
+  o_panel[0] = spec.origin_W;
+  for (int p = 1; p < panels; ++p) {
+    R_panel[p] = R_panel[p - 1] * rot_y(spec.folds[p - 1].angle);
+    o_panel[p] = o_panel[p - 1] + R_panel[p - 1] * Vec3(panel_start[p] - panel_start[p - 1], 0, 0);
+  }
+  auto panel_of = [&](double s_mid) {
+    int p = 0;
+    while (p + 1 < panels && s_mid > panel_start[p + 1]) ++p;
+    return p;
+  };
+
+  auto body_id = [&](int r, int i) { return r * n_along + i; };
+  for (int r = 0; r < rows; ++r) {
+    for (int i = 0; i < n_along; ++i) {
+      BodyDef b;
+      b.s_min = bs[i];
+      b.s_max = bs[i + 1];
+      b.y_min = r * bw;
+      b.y_max = (r + 1) * bw;
+      b.panel = panel_of(0.5 * (b.s_min + b.s_max));
+      b.size = Vec3(b.s_max - b.s_min, bw, spec.thickness);
+      b.mass = spec.density * b.size.prod();
+      b.J_B = box_inertia(b.mass, b.size);
+      b.R0_WB = R_panel[b.panel];
+      const Vec3 local(0.5 * (b.s_min + b.s_max) - panel_start[b.panel], 0.5 * (b.y_min + b.y_max),
+                       0);
+      b.p0_W = o_panel[b.panel] + R_panel[b.panel] * local;
+      b.fixed = (spec.clamp_start && i == 0) ||
+                std::find(spec.fixed_panels.begin(), spec.fixed_panels.end(), b.panel) !=
+                    spec.fixed_panels.end();
+      b.name = fmt::format("seg_r{}_s{}", r, i);
+      m.bodies.push_back(b);
+    }
+  }
+
+  for (const FoldSpec& f : spec.folds) m.creases.push_back({f.law, f.angle});
+  auto centre = [&](int id) {
+    const BodyDef& b = m.bodies[id];
+    return Vec3(0.5 * (b.s_min + b.s_max), 0.5 * (b.y_min + b.y_max), 0);
+  };
+  // Along the length: joint i joins body i (outer, e-) to body i+1 (inner, e+).
+  for (int r = 0; r < rows; ++r) {
+    for (int i = 0; i + 1 < n_along; ++i) {
+      const Joint& j = joints[i];
+      ElementDef e;
+      e.outer = body_id(r, i);
+      e.inner = body_id(r, i + 1);
+      const Vec3 P(j.s, (r + 0.5) * bw, 0);
+      e.c_outer_B = P - centre(e.outer);
+      e.c_inner_B = P - centre(e.inner);
+      e.K = joint_stiffness(spec, bw, j.h, bw / spec.width, false, rows);
+      e.crease = j.fold;
+      e.C = spec.damping_time * e.K;
+      e.name = fmt::format("{}_r{}_s{}", j.fold >= 0 ? "crease" : "joint", r, i);
+      m.elements.push_back(e);
+    }
+  }
+  // Across the width: between rows r and r+1 at each body's mid-length.
+  Mat3 R_across;
+  R_across << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // element x across the joint line, y along it
+  for (int r = 0; r + 1 < rows; ++r) {
+    for (int i = 0; i < n_along; ++i) {
+      ElementDef e;
+      e.outer = body_id(r, i);
+      e.inner = body_id(r + 1, i);
+      const BodyDef& b = m.bodies[e.outer];
+      const Vec3 P(0.5 * (b.s_min + b.s_max), (r + 1) * bw, 0);
+      e.c_outer_B = P - centre(e.outer);
+      e.c_inner_B = P - centre(e.inner);
+      e.R_inner_E = e.R_outer_F = R_across;
+      e.K = joint_stiffness(spec, b.size.x(), bw, 1.0, true, rows);
+      e.C = spec.damping_time * e.K;
+      e.name = fmt::format("across_r{}_s{}", r, i);
+      m.elements.push_back(e);
+    }
+  }
+  m.finalize_dofs();
+  return m;
+}
+
+MaterialPoint locate_material_point(const Model& model, double s, double y) {
+  const double tol = 1e-12 * std::max(1.0, model.sheet.length);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const BodyDef& b = model.bodies[i];
+    if (s >= b.s_min - tol && s <= b.s_max + tol && y >= b.y_min - tol && y <= b.y_max + tol) {
+      return {static_cast<int>(i),
+              Vec3(s - 0.5 * (b.s_min + b.s_max), y - 0.5 * (b.y_min + b.y_max), 0)};
+    }
+  }
+  throw InputError(model.source, "at",
+                   fmt::format("material point ({}, {}) m lies outside the sheet [0, {}] x [0, {}]",
+                               s, y, model.sheet.length, model.sheet.width));
+}
+
+}  // namespace finseg

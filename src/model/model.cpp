@@ -1,0 +1,112 @@
+#include "model/model.hpp"
+
+#include <fmt/format.h>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace finseg {
+
+void Model::finalize_dofs() {
+  dof_of_body.assign(bodies.size(), -1);
+  num_dofs = 0;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].fixed) {
+      dof_of_body[i] = num_dofs;
+      num_dofs += 6;
+    }
+  }
+}
+
+int Model::body_index(const std::string& name) const {
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+Mat3 box_inertia(double mass, const Vec3& size) {
+  const Vec3 s2 = size.cwiseProduct(size);
+  return (mass / 12.0) * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y()).asDiagonal();
+}
+
+namespace {
+
+bool finite(const Eigen::MatrixXd& m) {
+  return m.allFinite();
+}
+
+void check_body_ref(const Model& m, int body, const std::string& field) {
+  if (body < 0 || body >= static_cast<int>(m.bodies.size())) {
+    throw InputError(m.source, field,
+                     fmt::format("body index {} out of range [0, {})", body, m.bodies.size()));
+  }
+}
+
+}  // namespace
+
+void validate(const Model& m) {
+  if (m.bodies.empty()) throw InputError(m.source, "bodies", "the model has no body");
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    const BodyDef& b = m.bodies[i];
+    const std::string f = fmt::format("bodies[{}]", i);
+    if (!(b.mass > 0) || !std::isfinite(b.mass)) {
+      throw InputError(m.source, f + ".mass", fmt::format("{} kg; must be > 0", b.mass));
+    }
+    if (!(b.size.minCoeff() > 0) || !finite(b.size)) {
+      throw InputError(m.source, f + ".size", "box edge lengths must be finite and > 0 m");
+    }
+    if (!finite(b.J_B) || !(b.J_B.diagonal().minCoeff() > 0)) {
+      throw InputError(m.source, f + ".inertia", "must be finite with positive diagonal");
+    }
+    if (!finite(b.p0_W) || !finite(b.R0_WB) ||
+        (b.R0_WB.transpose() * b.R0_WB - Mat3::Identity()).norm() > 1e-9) {
+      throw InputError(m.source, f + ".pose", "position must be finite, orientation a rotation");
+    }
+  }
+  for (size_t k = 0; k < m.elements.size(); ++k) {
+    const ElementDef& e = m.elements[k];
+    const std::string f = fmt::format("elements[{}]", k);
+    check_body_ref(m, e.inner, f + ".inner");
+    check_body_ref(m, e.outer, f + ".outer");
+    if (e.inner == e.outer) throw InputError(m.source, f, "joins a body to itself");
+    if (!finite(e.K) || e.K.minCoeff() < 0) {
+      throw InputError(m.source, f + ".stiffness", "must be finite and >= 0");
+    }
+    if (!finite(e.C) || e.C.minCoeff() < 0) {
+      throw InputError(m.source, f + ".damping", "must be finite and >= 0");
+    }
+    if (e.crease >= static_cast<int>(m.creases.size()) ||
+        (e.crease >= 0 && !m.creases[e.crease].law)) {
+      throw InputError(m.source, f + ".crease", "refers to a missing crease law");
+    }
+  }
+  for (size_t i = 0; i < m.loads.size(); ++i) {
+    const LoadDef& l = m.loads[i];
+    const std::string f = fmt::format("loads[{}]", i);
+    check_body_ref(m, l.body, f + ".body");
+    if (!finite(l.force) || !finite(l.moment) || !finite(l.point_B)) {
+      throw InputError(m.source, f, "force, moment and point must be finite");
+    }
+  }
+  for (size_t i = 0; i < m.drives.size(); ++i) {
+    const DriveDef& d = m.drives[i];
+    const std::string f = fmt::format("drives[{}]", i);
+    check_body_ref(m, d.body, f + ".body");
+    if (!(d.stiffness > 0) || !std::isfinite(d.stiffness)) {
+      throw InputError(m.source, f + ".stiffness", "must be finite and > 0 N/m");
+    }
+    if (std::abs(d.direction_W.norm() - 1.0) > 1e-9) {
+      throw InputError(m.source, f + ".direction", "must be a unit vector");
+    }
+    if (d.damping < 0 || d.travel < 0 || d.step < 0) {
+      throw InputError(m.source, f, "damping, travel and step must be >= 0");
+    }
+  }
+  if (!finite(m.gravity_W)) throw InputError(m.source, "gravity", "must be finite");
+  if (static_cast<int>(m.dof_of_body.size()) != static_cast<int>(m.bodies.size())) {
+    throw InputError(m.source, "bodies", "finalize_dofs() was not called after adding bodies");
+  }
+}
+
+}  // namespace finseg

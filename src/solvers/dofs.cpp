@@ -1,0 +1,128 @@
+#include "solvers/dofs.hpp"
+
+#include <fmt/format.h>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/so3.hpp"
+
+namespace finseg {
+
+void apply_pose_increment(const Model& model, State& state, const Eigen::VectorXd& dq) {
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    state.p_W[i] += dq.segment<3>(d);
+    state.R_WB[i] = so3_exp<double>(dq.segment<3>(d + 3)) * state.R_WB[i];
+  }
+}
+
+Eigen::VectorXd velocity_vector(const Model& model, const State& state) {
+  Eigen::VectorXd v(model.num_dofs);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    v.segment<3>(d) = state.v_W[i];
+    v.segment<3>(d + 3) = state.w_W[i];
+  }
+  return v;
+}
+
+void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v) {
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    state.v_W[i] = v.segment<3>(d);
+    state.w_W[i] = v.segment<3>(d + 3);
+  }
+}
+
+Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(12 * model.bodies.size());
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const BodyDef& b = model.bodies[i];
+    const Mat3 J_W = state.R_WB[i] * b.J_B * state.R_WB[i].transpose();
+    for (int r = 0; r < 3; ++r) {
+      t.emplace_back(d + r, d + r, b.mass);
+      for (int c = 0; c < 3; ++c) t.emplace_back(d + 3 + r, d + 3 + c, J_W(r, c));
+    }
+  }
+  Eigen::SparseMatrix<double> M(model.num_dofs, model.num_dofs);
+  M.setFromTriplets(t.begin(), t.end());
+  return M;
+}
+
+Eigen::VectorXd momentum(const Model& model, const State& state) {
+  Eigen::VectorXd p(model.num_dofs);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const BodyDef& b = model.bodies[i];
+    p.segment<3>(d) = b.mass * state.v_W[i];
+    p.segment<3>(d + 3) = state.R_WB[i] * b.J_B * state.R_WB[i].transpose() * state.w_W[i];
+  }
+  return p;
+}
+
+double kinetic_energy(const Model& model, const State& state) {
+  double e = 0;
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const BodyDef& b = model.bodies[i];
+    const Vec3 w_B = state.R_WB[i].transpose() * state.w_W[i];
+    e += 0.5 * b.mass * state.v_W[i].squaredNorm() + 0.5 * w_B.dot(b.J_B * w_B);
+  }
+  return e;
+}
+
+void set_drives_at_time(const Model& model, State& state, double t) {
+  for (size_t i = 0; i < model.drives.size(); ++i) {
+    const DriveDef& d = model.drives[i];
+    double s = d.speed * t;
+    if (d.travel > 0) s = std::min(s, d.travel);
+    state.drive_s[i] = s;
+  }
+}
+
+std::string most_strained_element(const Model& model, const State& state) {
+  double worst = -1;
+  std::string text = "no force element";
+  for (size_t k = 0; k < model.elements.size(); ++k) {
+    const ElementDef& e = model.elements[k];
+    const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
+    const Vec3 Pp = state.p_W[e.inner] + state.R_WB[e.inner] * e.c_inner_B;
+    const Vec3 Pm = state.p_W[e.outer] + state.R_WB[e.outer] * e.c_outer_B;
+    const Vec3 z = R_WF.transpose() * (Pp - Pm) - e.z0_F;
+    const double scale = model.bodies[e.inner].size.x();
+    const double strain = z.norm() / scale;
+    if (!(strain <= worst)) {
+      worst = strain;
+      text = fmt::format(
+          "element {} ('{}', bodies {} and {}): separation {:.3g} m ({:.3g} of the "
+          "segment length)",
+          k, e.name, e.inner, e.outer, z.norm(), strain);
+      if (!std::isfinite(strain)) break;
+    }
+  }
+  return text;
+}
+
+void check_finite(const Model& model, const State& state, const BodyForces& forces,
+                  const char* where) {
+  bool ok = true;
+  for (size_t i = 0; i < model.bodies.size() && ok; ++i) {
+    ok = forces.f_W[i].allFinite() && forces.tau_W[i].allFinite() && state.p_W[i].allFinite() &&
+         state.v_W[i].allFinite() && state.w_W[i].allFinite() &&
+         state.p_W[i].norm() < 1e6 * std::max(1.0, model.sheet.length);
+  }
+  if (!ok) {
+    throw DivergenceError(
+        fmt::format("{} diverged at t = {:.6g}: non-finite or runaway state; "
+                    "most strained {}",
+                    where, state.t, most_strained_element(model, state)));
+  }
+}
+
+}  // namespace finseg

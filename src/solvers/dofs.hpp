@@ -1,0 +1,41 @@
+// Helpers shared by the solvers: moving between State and DOF vectors, mass matrices,
+// energies and the divergence diagnosis.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <string>
+
+#include "elements/assemble.hpp"
+#include "model/model.hpp"
+#include "model/state.hpp"
+
+namespace finseg {
+
+/// Applies a pose increment: p_W += dq[0:3], R_WB = exp([dq[3:6]]x) R_WB per free body.
+void apply_pose_increment(const Model& model, State& state, const Eigen::VectorXd& dq);
+
+/// Velocities (v_W, w_W) of the free bodies as one vector, and back.
+Eigen::VectorXd velocity_vector(const Model& model, const State& state);
+void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v);
+
+/// Block-diagonal mass matrix diag(m I, R J_B R^T) of the free bodies.
+Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state);
+
+/// Momentum vector (m v_W, J_W w_W) of the free bodies.
+Eigen::VectorXd momentum(const Model& model, const State& state);
+
+/// Kinetic energy of all bodies, J.
+double kinetic_energy(const Model& model, const State& state);
+
+/// Drive displacement at time t for the dynamic solvers: speed * t, capped at travel.
+void set_drives_at_time(const Model& model, State& state, double t);
+
+/// Throws DivergenceError naming the time, the most strained element and the quantity
+/// when forces or the state are not finite or have blown up.
+void check_finite(const Model& model, const State& state, const BodyForces& forces,
+                  const char* where);
+
+/// One-line description of the most strained element (for divergence messages).
+std::string most_strained_element(const Model& model, const State& state);
+
+}  // namespace finseg

@@ -1,0 +1,181 @@
+// Static equilibrium (the role of Adams' EQUILIBRIUM): Newton on the exact stiffness with a
+// backtracking line search, load stepping with step halving, and quasi-static drive paths
+// run as a sequence of equilibria.
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/integrators.hpp"
+#include "solvers/linear_solve.hpp"
+
+namespace finseg {
+namespace {
+
+// Force scale for the convergence test: external loads, weight and gauge forces.
+double force_scale(const Model& model) {
+  double f = 0;
+  const double L = std::max(model.sheet.length, 1e-3);
+  for (const LoadDef& l : model.loads) f = std::max(f, l.force.norm() + l.moment.norm() / L);
+  double weight = 0;
+  for (const BodyDef& b : model.bodies) weight += b.mass;
+  f = std::max(f, weight * model.gravity_W.norm());
+  for (const DriveDef& d : model.drives) {
+    f = std::max(f, d.stiffness * std::max(d.step, 1e-3 * L));
+  }
+  return std::max(f, 1e-9);
+}
+
+double residual_norm(const Model& model, const BodyForces& f) {
+  const double L = std::max(model.sheet.length, 1e-3);
+  double r = 0;
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    if (model.bodies[i].fixed) continue;
+    r = std::max({r, f.f_W[i].lpNorm<Eigen::Infinity>(), f.tau_W[i].lpNorm<Eigen::Infinity>() / L});
+  }
+  return r;
+}
+
+// Newton from the current state at the current load scale and drive positions.
+bool solve_equilibrium(const Model& model, State& state, const SolverSettings& settings,
+                       double fscale, BodyForces& f, SolverStats& stats) {
+  ForceJacobian jac;
+  const double L = std::max(model.sheet.length, 1e-3);
+  for (int it = 0; it < settings.max_iterations; ++it) {
+    compute_forces(model, state, f, &jac);
+    ++stats.force_evaluations;
+    ++stats.jacobian_evaluations;
+    ++stats.newton_iterations;
+    const double r0 = residual_norm(model, f);
+    if (!std::isfinite(r0)) return false;
+    if (r0 <= settings.tolerance * fscale) return true;
+    const Eigen::VectorXd g = generalized_forces(model, f);
+    Eigen::SparseMatrix<double> K = -jac.dq;
+    Eigen::VectorXd dq;
+    if (!sparse_solve(K, g, dq)) {
+      throw DivergenceError(fmt::format(
+          "static solver: stiffness matrix is singular at t = {:.6g}: the structure is not "
+          "restrained (add a fixture) or has a mechanism; most strained {}",
+          state.t, most_strained_element(model, state)));
+    }
+    // Limit the step so that no rotation jumps by more than 0.5 rad in one iteration.
+    double alpha = 1.0;
+    for (int i = 0; i + 5 < dq.size(); i += 6) {
+      alpha = std::min(alpha, 0.5 / std::max(dq.segment<3>(i + 3).norm(), 1e-300));
+    }
+    const State base = state;
+    BodyForces trial;
+    double best_r = INFINITY, best_alpha = alpha;
+    for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
+      state = base;
+      apply_pose_increment(model, state, alpha * dq);
+      compute_forces(model, state, trial);
+      ++stats.force_evaluations;
+      const double r = residual_norm(model, trial);
+      if (r < best_r) best_r = r, best_alpha = alpha;
+      if (r <= (1 - 1e-4 * alpha) * r0) break;
+    }
+    state = base;
+    apply_pose_increment(model, state, best_alpha * dq);
+    // A full Newton step this small leaves an error of its square: converged, even where
+    // round-off in the stiff in-plane springs keeps the residual above the force tolerance.
+    double step = 0;
+    for (int i = 0; i + 5 < dq.size(); i += 6) {
+      step = std::max({step, dq.segment<3>(i).lpNorm<Eigen::Infinity>() / L,
+                       dq.segment<3>(i + 3).lpNorm<Eigen::Infinity>()});
+    }
+    if (best_alpha == 1.0 && step < settings.tolerance) {
+      compute_forces(model, state, f);
+      return true;
+    }
+  }
+  return false;
+}
+
+// Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
+template <class Setter>
+void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
+                  double a, double b, int initial_steps, Setter set, const char* what,
+                  BodyForces& f, SolverStats& stats) {
+  double x = a;
+  double dx = (b - a) / std::max(1, initial_steps);
+  const double dx_min = std::abs(b - a) * 1e-6;
+  while ((b - x) * (b > a ? 1 : -1) > 1e-12 * std::abs(b - a)) {
+    const double x_try = (b > a) ? std::min(b, x + dx) : std::max(b, x + dx);
+    const State start = state;
+    set(state, x_try);
+    if (solve_equilibrium(model, state, settings, fscale, f, stats)) {
+      x = x_try;
+      dx *= 1.5;
+      if ((b > a ? dx > (b - a) : dx < (b - a))) dx = b - a;
+      continue;
+    }
+    state = start;
+    ++stats.rejected_steps;
+    dx *= 0.25;
+    if (std::abs(dx) < dx_min) {
+      throw DivergenceError(fmt::format(
+          "static solver: no equilibrium found beyond {} = {:.6g} (increment below {:.3g}); "
+          "most strained {}",
+          what, x, dx_min, most_strained_element(model, state)));
+    }
+  }
+}
+
+}  // namespace
+
+void run_static(const Model& model, State& state, const SolverSettings& settings,
+                const OutputCallback& on_output, const ProgressCallback& on_progress,
+                SolverStats& stats) {
+  const double fscale = force_scale(model);
+  for (Vec3& v : state.v_W) v.setZero();
+  for (Vec3& w : state.w_W) w.setZero();
+  BodyForces f;
+  const bool path = !model.drives.empty() && model.drives[0].travel > 0 && model.drives[0].step > 0;
+  // Loads first, by load stepping from zero.
+  const double lambda_end = state.load_scale;
+  state.load_scale = 0;
+  state.t = 0;
+  compute_forces(model, state, f);
+  if (!path) on_output(state, f);
+  continuation(
+      model, state, settings, fscale, 0.0, lambda_end, settings.load_steps,
+      [&](State& s, double x) {
+        s.load_scale = x;
+        s.t = x;
+      },
+      "load scale", f, stats);
+  commit_history(model, state);
+  ++stats.steps;
+  if (!path) {
+    on_output(state, f);
+    on_progress(1.0);
+    return;
+  }
+  // Quasi-static pull: one equilibrium per drive step; t records the drive displacement.
+  const DriveDef& d0 = model.drives[0];
+  const int n = static_cast<int>(std::ceil(d0.travel / d0.step - 1e-9));
+  state.t = 0;
+  on_output(state, f);
+  for (int k = 1; k <= n; ++k) {
+    const double s_from = state.drive_s[0];
+    const double s_to = std::min(d0.travel, k * d0.step);
+    continuation(
+        model, state, settings, fscale, s_from, s_to, 1,
+        [&](State& s, double x) {
+          for (size_t i = 0; i < model.drives.size(); ++i) {
+            const DriveDef& d = model.drives[i];
+            s.drive_s[i] = std::min(d.travel, x * (d.step / d0.step));
+          }
+          s.t = x;
+        },
+        "drive displacement", f, stats);
+    commit_history(model, state);
+    ++stats.steps;
+    on_output(state, f);
+    on_progress(static_cast<double>(k) / n);
+  }
+}
+
+}  // namespace finseg
