@@ -266,6 +266,7 @@ BodyKin<double> kin_of(const State& s, int i) {
 
 void add_contact_forces(const Model& model, const State& state, Assembler& assembler) {
   if (!model.contact.enabled) return;
+  validate_contact(model.contact, model.source);  // models built through the API
   std::vector<PairContact> pairs;
   detect(model, state, pairs);
   const ContactDef& def = model.contact;
