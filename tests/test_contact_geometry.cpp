@@ -104,7 +104,7 @@ TEST(ContactClip, SeparatedProjectionsGiveNoPolygon) {
   EXPECT_FALSE(clip_plates(kin(Vec3::Zero()), s, kin(Vec3(0.03, 0, 0)), s, 0, m));
 }
 
-TEST(ContactBroadphase, SweepAndPruneFindsExactlyTheOverlappingBoxes) {
+TEST(ContactBroadphase, GridFindsExactlyTheOverlappingBoxes) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> pos(0, 0.2), ang(-kPi, kPi);
   std::vector<Aabb> boxes;
@@ -114,15 +114,21 @@ TEST(ContactBroadphase, SweepAndPruneFindsExactlyTheOverlappingBoxes) {
     boxes.push_back(
         plate_aabb(Vec3(pos(rng), pos(rng), 0.1 * pos(rng)), R, Vec3(0.01, 0.02, 1e-4), 0));
   }
+  // A clamped plate much larger than the rest, and a few mid-sized ones.
+  boxes.push_back(plate_aabb(Vec3(0.1, 0.1, 0), Mat3::Identity(), Vec3(0.3, 0.25, 1e-4), 0));
+  for (int i = 0; i < 5; ++i)
+    boxes.push_back(
+        plate_aabb(Vec3(pos(rng), pos(rng), 0.01), rot_z(ang(rng)), Vec3(0.08, 0.04, 1e-4), 0));
+  const int n = static_cast<int>(boxes.size());
   std::vector<std::pair<int, int>> brute;
-  for (int i = 0; i < 400; ++i)
-    for (int j = i + 1; j < 400; ++j) {
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
       bool overlap = true;
       for (int k = 0; k < 3; ++k)
         overlap = overlap && boxes[i].lo[k] <= boxes[j].hi[k] && boxes[j].lo[k] <= boxes[i].hi[k];
       if (overlap) brute.emplace_back(i, j);
     }
-  SweepAndPrune sap;
+  BroadPhase sap;
   const auto found = sap.find_pairs(boxes);
   EXPECT_GT(brute.size(), 50u);
   EXPECT_EQ(found, brute);

@@ -1,7 +1,11 @@
-// Broad phase: axis-aligned boxes of the segments and sweep-and-prune along the axis of
-// largest spread. O(n log n + k) for n boxes and k overlapping pairs.
+// Broad phase: axis-aligned boxes of the segments and a uniform grid hashed by cell. Boxes
+// go into every cell they cover (cell edge = median box extent); the entries are sorted by
+// cell, pairs are tested inside each cell and reported only from the cell that holds the
+// lower corner of their overlap, so each pair comes once. O(n log n) for n boxes of similar
+// size; boxes covering more than 64 cells (a large clamped plate) are tested against all.
 #pragma once
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -14,18 +18,20 @@ struct Aabb {
   Vec3 hi = Vec3::Zero();
 };
 
-/// Box of a thin plate (mid-surface rectangle of half sizes hx, hy, thickness radius r)
-/// with centroid p_W and orientation R_WB, grown by `margin`.
+/// Box of a thin plate with edge lengths `size` (z = thickness), centroid p_W and
+/// orientation R_WB, grown by `margin`.
 Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const Vec3& size, double margin);
 
-/// All pairs (i < j) of overlapping boxes, sorted. `scratch` keeps its capacity between
-/// calls so that repeated detection does not allocate.
-struct SweepAndPrune {
+/// Finds all pairs (i < j) of overlapping boxes, sorted. Keeps its buffers between calls so
+/// that repeated detection does not allocate.
+class BroadPhase {
+ public:
   std::vector<std::pair<int, int>> find_pairs(const std::vector<Aabb>& boxes);
 
  private:
-  std::vector<std::pair<double, int>> order_;
-  std::vector<int> active_;
+  std::vector<std::pair<std::uint64_t, int>> entries_;
+  std::vector<int> large_;
+  std::vector<double> extents_;
 };
 
 }  // namespace finseg

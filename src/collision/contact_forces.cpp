@@ -131,15 +131,18 @@ struct PairContact {
   std::array<const ContactAnchor*, 8> anchor{};
 };
 
-void detect(const Model& model, const State& state, std::vector<PairContact>& out) {
-  out.clear();
+/// Calls visit(const PairContact&) for every touching pair, in pair order.
+template <class Visit>
+void detect(const Model& model, const State& state, Visit&& visit) {
   const ContactDef& def = model.contact;
   const int n = static_cast<int>(model.bodies.size());
-  std::vector<Aabb> boxes(n);
+  // Buffers kept per thread between calls: large models then detect without page faults.
+  thread_local std::vector<Aabb> boxes;
+  thread_local BroadPhase broad;
+  boxes.resize(n);
   for (int i = 0; i < n; ++i)
     boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i].size, def.margin);
-  SweepAndPrune sap;
-  const auto candidates = sap.find_pairs(boxes);
+  const auto candidates = broad.find_pairs(boxes);
   if (candidates.empty()) return;
   const PairRules rules(model);
   for (const auto& [a, b] : candidates) {
@@ -174,7 +177,7 @@ void detect(const Model& model, const State& state, std::vector<PairContact>& ou
       pc.active[k] = g.valid && depth > 0;
       any = any || pc.active[k];
     }
-    if (any) out.push_back(pc);
+    if (any) visit(pc);
   }
 }
 
@@ -267,14 +270,12 @@ BodyKin<double> kin_of(const State& s, int i) {
 void add_contact_forces(const Model& model, const State& state, Assembler& assembler) {
   if (!model.contact.enabled) return;
   validate_contact(model.contact, model.source);  // models built through the API
-  std::vector<PairContact> pairs;
-  detect(model, state, pairs);
   const ContactDef& def = model.contact;
-  for (const PairContact& pc : pairs) {
+  detect(model, state, [&](const PairContact& pc) {
     assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
       return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
     });
-  }
+  });
 }
 
 void commit_contact_history(const Model& model, State& state) {
@@ -283,11 +284,9 @@ void commit_contact_history(const Model& model, State& state) {
     return;
   }
   const ContactDef& def = model.contact;
-  std::vector<PairContact> pairs;
-  detect(model, state, pairs);
   std::vector<ContactAnchor> next;
   std::vector<PointReport> rep;
-  for (const PairContact& pc : pairs) {
+  detect(model, state, [&](const PairContact& pc) {
     rep.clear();
     const BodyKin<double> A = kin_of(state, pc.a), B = kin_of(state, pc.b);
     Wrench<double> wa, wb;
@@ -328,7 +327,7 @@ void commit_contact_history(const Model& model, State& state) {
       }
       next.push_back(an);
     }
-  }
+  });
   std::sort(next.begin(), next.end(),
             [](const ContactAnchor& x, const ContactAnchor& y) { return x.key < y.key; });
   state.contact.anchors = std::move(next);
@@ -337,10 +336,8 @@ void commit_contact_history(const Model& model, State& state) {
 ContactSummary contact_summary(const Model& model, const State& state) {
   ContactSummary s;
   if (!model.contact.enabled) return s;
-  std::vector<PairContact> pairs;
-  detect(model, state, pairs);
   std::vector<PointReport> rep;
-  for (const PairContact& pc : pairs) {
+  detect(model, state, [&](const PairContact& pc) {
     rep.clear();
     Wrench<double> wa, wb;
     evaluate_pair(model.contact, pc, kin_of(state, pc.a), kin_of(state, pc.b), wa, wb, &rep);
@@ -352,7 +349,7 @@ ContactSummary contact_summary(const Model& model, const State& state) {
       s.max_penetration = std::max(s.max_penetration, r.depth);
       s.points_W.push_back(r.x_W);
     }
-  }
+  });
   return s;
 }
 
