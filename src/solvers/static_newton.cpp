@@ -59,22 +59,30 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
           "restrained (add a fixture) or has a mechanism; most strained {}",
           state.t, most_strained_element(model, state)));
     }
-    // Limit the step so that no rotation jumps by more than 0.5 rad in one iteration.
+    // Limit the step so that no rotation jumps by more than 1 rad in one iteration.
     double alpha = 1.0;
     for (int i = 0; i + 5 < dq.size(); i += 6) {
-      alpha = std::min(alpha, 0.5 / std::max(dq.segment<3>(i + 3).norm(), 1e-300));
+      alpha = std::min(alpha, 1.0 / std::max(dq.segment<3>(i + 3).norm(), 1e-300));
     }
+    // Backtracking: accept a sufficient decrease of the potential energy (the natural merit
+    // for conservative structures) or of the residual (follower loads, indefinite K).
+    const double slope = -g.dot(dq);  // dU/dalpha at alpha = 0
     const State base = state;
+    const double u0 = f.potential_energy;
     BodyForces trial;
     double best_r = INFINITY, best_alpha = alpha;
-    for (int ls = 0; ls < 8; ++ls, alpha *= 0.5) {
+    for (int ls = 0; ls < 10; ++ls, alpha *= 0.5) {
       state = base;
       apply_pose_increment(model, state, alpha * dq);
       compute_forces(model, state, trial);
       ++stats.force_evaluations;
       const double r = residual_norm(model, trial);
       if (r < best_r) best_r = r, best_alpha = alpha;
-      if (r <= (1 - 1e-4 * alpha) * r0) break;
+      const bool energy_ok = slope < 0 && trial.potential_energy <= u0 + 1e-4 * alpha * slope;
+      if (energy_ok || r <= (1 - 1e-4 * alpha) * r0) {
+        best_alpha = alpha;
+        break;
+      }
     }
     state = base;
     apply_pose_increment(model, state, best_alpha * dq);
