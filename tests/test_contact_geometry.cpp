@@ -13,6 +13,7 @@
 #include "collision/narrowphase.hpp"
 #include "core/error.hpp"
 #include "elements/assembler.hpp"
+#include "generators/zigzag.hpp"
 
 namespace finseg {
 namespace {
@@ -381,6 +382,33 @@ TEST(ContactRules, FoldedPanelsTouchButJoinedAndSameSheetNeighboursDoNot) {
   EXPECT_EQ(sum.active, 12);
   EXPECT_NEAR(sum.max_penetration, 1e-5, 1e-12);
   for (const Vec3& p : sum.points_W) EXPECT_LT(p.x(), 3 * 0.01 + 1e-9);
+}
+
+}  // namespace
+}  // namespace finseg
+
+namespace finseg {
+namespace {
+
+// The paper's zigzag in its initial state (80 deg, panels 20 deg apart at the creases), one
+// and two segments across: no false contact anywhere, although neighbouring segments share
+// edges and corners, also across the creases.
+TEST(ContactRules, GeneratedZigzagHasNoFalseContact) {
+  for (int across : {1, 2}) {
+    ZigzagSpec spec;
+    spec.segments_across = across;
+    Model m = build_zigzag_model(spec);
+    m.contact.enabled = true;
+    m.contact.stiffness = 3e7;
+    const State s = initial_state(m);
+    EXPECT_EQ(contact_summary(m, s).active, 0) << across << " across";
+    // Folded much further (panels 2 deg apart) the faces near the creases do touch.
+    spec.fold_angle = 89.9 * kDegToRad;
+    Model tight = build_zigzag_model(spec);
+    tight.contact = m.contact;
+    const ContactSummary c = contact_summary(tight, initial_state(tight));
+    EXPECT_GT(c.active, 0) << across << " across";
+  }
 }
 
 }  // namespace
