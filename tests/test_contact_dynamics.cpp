@@ -160,6 +160,7 @@ void check_restitution(Law law, double cr, double c_max) {
 TEST(ContactDynamics, ImpactDampingRestitutionMatchesOneDofImpact) {
   // c_max comparable to critical damping of the linearised contact.
   check_restitution(Law::Impact, 1, 3.0);
+  check_restitution(Law::Impact, 1, 60.0);  // ~0.3 of critical at the deepest point
 }
 TEST(ContactDynamics, HuntCrossleyRestitutionMatchesOneDofImpact) {
   check_restitution(Law::HC, 0.5, 0);
