@@ -1,11 +1,75 @@
-// Contact settings of a model (filled in by the contact module).
+// Contact settings of a model (paper eqs. 18-19) and the contact history carried in State.
+// docs/contact.md explains every parameter and how to choose it.
 #pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/types.hpp"
 
 namespace finseg {
 
-/// Contact between segments: off unless enabled.
+/// Damping part of the normal force.
+enum class ContactDamping {
+  Impact,              ///< Adams IMPACT: STEP(delta, 0, 0, d, c_max) * delta_dot
+  HuntCrossley,        ///< K delta^e * 3(1-cr)/2 * delta_dot / v0
+  LankaraniNikravesh,  ///< K delta^e * 3(1-cr^2)/4 * delta_dot / v0
+  Flores,              ///< K delta^e * 8(1-cr)/(5 cr) * delta_dot / v0
+};
+
+/// Tangential (friction) law.
+enum class FrictionModel {
+  None,        ///< frictionless
+  Continuous,  ///< Adams mu(v): 0 at rest, mu_s at v_s, mu_d beyond v_d (creeps when loaded)
+  Anchor,      ///< elastic anchor (bristle): holds static friction without creep
+};
+
+/// Contact between segments: off unless enabled. All values SI. K and the damping describe
+/// the contact of a whole face lying flat on another: the force is shared by the vertices of
+/// the overlap polygon (weights summing to 1, see docs/contact.md).
 struct ContactDef {
   bool enabled = false;
+
+  // Normal force (eq. 18): F = K delta^e + damping, never attractive.
+  double stiffness = 0;   ///< K, N/m^e, > 0
+  double exponent = 1.5;  ///< e >= 1
+  ContactDamping damping_law = ContactDamping::Impact;
+  double damping = 0;              ///< Impact: c_max, N s/m, >= 0
+  double damping_depth = 1e-5;     ///< Impact: d, penetration of full damping, m, > 0
+  double restitution = 1.0;        ///< HC / LN / Flores: coefficient of restitution, (0, 1]
+  double min_impact_speed = 1e-3;  ///< HC / LN / Flores: floor of v0, m/s, > 0
+
+  // Friction (eq. 19): f = -F_n mu(v) along the slip direction.
+  FrictionModel friction = FrictionModel::None;
+  double mu_static = 0;             ///< mu_s >= 0
+  double mu_dynamic = 0;            ///< mu_d in [0, mu_s]
+  double stiction_speed = 1e-4;     ///< v_s, m/s, > 0
+  double friction_speed = 1e-3;     ///< v_d, m/s, > v_s
+  double tangential_stiffness = 0;  ///< Anchor: k_t of a whole face, N/m, > 0
+  double tangential_damping = 0;    ///< Anchor: c_t of a whole face, N s/m, >= 0
+
+  // Which pairs may touch.
+  /// Same-panel pairs at most this many force elements apart are skipped (>= 0).
+  int panel_exclusion = 2;
+  /// Lists of panels that may touch each other; empty: every panel with every panel.
+  std::vector<std::vector<int>> groups;
+  double margin = 0;  ///< extra broad-phase box growth, m, >= 0
+};
+
+/// History of one contact point (a vertex of the overlap polygon of one pair), kept from
+/// one accepted step to the next.
+struct ContactAnchor {
+  std::uint64_t key = 0;        ///< pair and vertex identity (collision/contact_forces.cpp)
+  Vec3 r_inc_B = Vec3::Zero();  ///< anchor on the incident body, its body frame, m
+  Vec3 r_ref_B = Vec3::Zero();  ///< anchor on the reference body, its body frame, m
+  double impact_speed = 0;      ///< penetration rate when the contact began, m/s
+  int side = 1;                 ///< which side of the reference plate the point is on
+  bool sliding = false;         ///< Anchor friction: currently slipping
+};
+
+/// Contact history in State (sorted by key); written only by commit_contact_history().
+struct ContactState {
+  std::vector<ContactAnchor> anchors;
 };
 
 }  // namespace finseg

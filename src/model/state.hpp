@@ -25,6 +25,7 @@ struct State {
   std::vector<double> drive_s;          ///< displacement of each drive, m
   double load_scale = 1.0;              ///< multiplies loads and gravity (static load stepping)
   std::vector<ElementHistory> history;  ///< one per force element
+  ContactState contact;                 ///< contact points' history (friction anchors)
 };
 
 /// State at t = 0: initial poses, zero velocities, initial crease angles.

@@ -1,0 +1,74 @@
+// Contact detection cost against the number of segments: stacks of sheets (10 layers of a
+// square grid of 5 mm segments, each sheet resting on the one below with small random
+// offsets and tilts), so that the number of touching pairs grows like n. Reports the
+// fitted complexity (expected: n log n from the broad phase's sort, or better).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+
+#include "collision/contact_forces.hpp"
+
+namespace finseg {
+namespace {
+
+struct Scene {
+  Model model;
+  State state;
+};
+
+Scene make_scene(int n) {
+  Scene sc;
+  const int layers = 10;
+  const int side = std::max(1, static_cast<int>(std::lround(std::sqrt(n / double(layers)))));
+  const double L = 5e-3, t = 1e-4, pitch = 1.1 * L;
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> jitter(-0.2e-3, 0.2e-3), tilt(-0.01, 0.01);
+  int made = 0;
+  for (int k = 0; k < layers && made < n; ++k)
+    for (int i = 0; i < side && made < n; ++i)
+      for (int j = 0; j < side + 1 && made < n; ++j, ++made) {
+        BodyDef b;
+        b.mass = 2e-6;
+        b.size = Vec3(L, L, t);
+        b.J_B = Mat3::Identity() * 1e-12;
+        b.fixed = k == 0;
+        b.panel = k;
+        sc.model.bodies.push_back(b);
+        sc.state.p_W.push_back(
+            Vec3(i * pitch + jitter(rng), j * pitch + jitter(rng), k * 0.97 * t));
+        sc.state.R_WB.push_back(
+            Eigen::AngleAxisd(tilt(rng), Vec3(tilt(rng), tilt(rng), 1).normalized())
+                .toRotationMatrix());
+        sc.state.v_W.push_back(Vec3::Zero());
+        sc.state.w_W.push_back(Vec3::Zero());
+      }
+  sc.model.contact.enabled = true;
+  sc.model.contact.stiffness = 1e5;
+  sc.model.finalize_dofs();
+  return sc;
+}
+
+void BM_ContactDetection(benchmark::State& st) {
+  const Scene sc = make_scene(static_cast<int>(st.range(0)));
+  int active = 0;
+  for (auto _ : st) {
+    const ContactSummary s = contact_summary(sc.model, sc.state);
+    active = s.active;
+    benchmark::DoNotOptimize(active);
+  }
+  st.counters["contact_points"] = active;
+  st.SetComplexityN(st.range(0));
+}
+BENCHMARK(BM_ContactDetection)
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Arg(3000)
+    ->Arg(30000)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity(benchmark::oNLogN);
+
+}  // namespace
+}  // namespace finseg
+
+BENCHMARK_MAIN();

@@ -1,0 +1,96 @@
+// Contact parameter helper and validation.
+#include "collision/contact_laws.hpp"
+
+#include <fmt/format.h>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace finseg {
+
+ContactSuggestion suggest_contact(double reduced_mass, double gravity, double depth,
+                                  double exponent, double load_factor, double damping_ratio) {
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0) || !std::isfinite(v))
+      throw InputError("<api>", name, fmt::format("must be positive and finite, got {}", v));
+  };
+  positive(reduced_mass, "reduced_mass");
+  positive(gravity, "gravity");
+  positive(depth, "depth");
+  positive(load_factor, "load_factor");
+  if (!(exponent >= 1) || !std::isfinite(exponent))
+    throw InputError("<api>", "exponent", fmt::format("must be >= 1, got {}", exponent));
+  if (!(damping_ratio >= 0) || !std::isfinite(damping_ratio))
+    throw InputError("<api>", "damping_ratio", fmt::format("must be >= 0, got {}", damping_ratio));
+  ContactSuggestion s;
+  const double load = load_factor * reduced_mass * gravity;
+  s.stiffness = load / std::pow(depth, exponent);
+  const double k_lin = exponent * load / depth;  // dF/d(delta) at delta = depth
+  s.damping = damping_ratio * 2 * std::sqrt(k_lin * reduced_mass);
+  s.damping_depth = depth;
+  s.tangential_stiffness = k_lin;
+  s.tangential_damping = 2 * std::sqrt(k_lin * reduced_mass);
+  s.period = 2 * kPi * std::sqrt(reduced_mass / k_lin);
+  return s;
+}
+
+void validate_contact(const ContactDef& c, const std::string& file) {
+  if (!c.enabled) return;
+  auto fail = [&](const char* field, const std::string& what) {
+    throw InputError(file, std::string("contact.") + field, what);
+  };
+  auto finite = [&](double v, const char* field) {
+    if (!std::isfinite(v)) fail(field, fmt::format("must be finite, got {}", v));
+  };
+  finite(c.stiffness, "stiffness");
+  if (!(c.stiffness > 0)) fail("stiffness", fmt::format("must be > 0 N/m^e, got {}", c.stiffness));
+  finite(c.exponent, "exponent");
+  if (!(c.exponent >= 1)) fail("exponent", fmt::format("must be >= 1, got {}", c.exponent));
+  finite(c.damping, "damping");
+  if (!(c.damping >= 0)) fail("damping", fmt::format("must be >= 0 N s/m, got {}", c.damping));
+  finite(c.damping_depth, "damping_depth");
+  if (!(c.damping_depth > 0))
+    fail("damping_depth", fmt::format("must be > 0 m, got {}", c.damping_depth));
+  if (c.damping_law != ContactDamping::Impact) {
+    finite(c.restitution, "restitution");
+    if (!(c.restitution > 0 && c.restitution <= 1))
+      fail("restitution", fmt::format("must be in (0, 1], got {}", c.restitution));
+    finite(c.min_impact_speed, "min_impact_speed");
+    if (!(c.min_impact_speed > 0))
+      fail("min_impact_speed", fmt::format("must be > 0 m/s, got {}", c.min_impact_speed));
+  }
+  if (c.friction != FrictionModel::None) {
+    finite(c.mu_static, "mu_static");
+    finite(c.mu_dynamic, "mu_dynamic");
+    if (!(c.mu_static >= 0)) fail("mu_static", fmt::format("must be >= 0, got {}", c.mu_static));
+    if (!(c.mu_dynamic >= 0)) fail("mu_dynamic", fmt::format("must be >= 0, got {}", c.mu_dynamic));
+    if (c.mu_dynamic > c.mu_static)
+      fail("mu_dynamic",
+           fmt::format("must be <= mu_static = {}, got {}", c.mu_static, c.mu_dynamic));
+    finite(c.stiction_speed, "stiction_speed");
+    finite(c.friction_speed, "friction_speed");
+    if (!(c.stiction_speed > 0))
+      fail("stiction_speed", fmt::format("must be > 0 m/s, got {}", c.stiction_speed));
+    if (!(c.friction_speed > c.stiction_speed))
+      fail("friction_speed", fmt::format("must be > stiction_speed = {} m/s, got {}",
+                                         c.stiction_speed, c.friction_speed));
+  }
+  if (c.friction == FrictionModel::Anchor) {
+    finite(c.tangential_stiffness, "tangential_stiffness");
+    finite(c.tangential_damping, "tangential_damping");
+    if (!(c.tangential_stiffness > 0))
+      fail("tangential_stiffness",
+           fmt::format("must be > 0 N/m for friction: anchor, got {}", c.tangential_stiffness));
+    if (!(c.tangential_damping >= 0))
+      fail("tangential_damping", fmt::format("must be >= 0 N s/m, got {}", c.tangential_damping));
+  }
+  if (c.panel_exclusion < 0)
+    fail("panel_exclusion", fmt::format("must be >= 0 elements, got {}", c.panel_exclusion));
+  finite(c.margin, "margin");
+  if (!(c.margin >= 0)) fail("margin", fmt::format("must be >= 0 m, got {}", c.margin));
+  for (std::size_t g = 0; g < c.groups.size(); ++g)
+    for (int p : c.groups[g])
+      if (p < 0) fail("groups", fmt::format("group {}: panel indices must be >= 0, got {}", g, p));
+}
+
+}  // namespace finseg

@@ -1,0 +1,415 @@
+// Contact geometry, laws and Jacobians, without a solver: clipping against hand-computed
+// polygons, the broad phase against brute force, the laws against their closed forms, the
+// autodiff Jacobian against central differences, and the pair rules.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <random>
+
+#include "collision/broadphase.hpp"
+#include "collision/contact_forces.hpp"
+#include "collision/contact_laws.hpp"
+#include "collision/narrowphase.hpp"
+#include "core/error.hpp"
+#include "elements/assembler.hpp"
+#include "generators/zigzag.hpp"
+
+namespace finseg {
+namespace {
+
+BodyKin<double> kin(const Vec3& p, const Mat3& R = Mat3::Identity()) {
+  return {p, R, Vec3::Zero(), Vec3::Zero()};
+}
+
+Mat3 rot_z(double a) {
+  return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+}
+
+TEST(ContactClip, SmallPlateOnLargePlateGivesItsFourCorners) {
+  const PlateShape big{0.05, 0.05, 5e-5}, small{0.01, 0.02, 5e-5};
+  Manifold m;
+  ASSERT_TRUE(clip_plates(kin(Vec3::Zero()), big, kin(Vec3(0.003, 0.001, 9e-5)), small, -1, m));
+  EXPECT_TRUE(m.ref_is_a);  // the larger plate is the reference
+  ASSERT_EQ(m.count, 4);
+  std::array<VertexGeometry<double>, 8> g;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(m.poly[k].kind, VertexKind::Incident);
+    g[k] = vertex_geometry(kin(Vec3::Zero()), big, kin(Vec3(0.003, 0.001, 9e-5)), small, m.poly[k]);
+    EXPECT_NEAR(g[k].height, 9e-5, 1e-15);
+  }
+  std::array<double, 8> share;
+  ASSERT_TRUE(vertex_shares(g.data(), 4, 8e-4, 8e-4, share.data()));
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(share[k], 0.25, 1e-14);
+}
+
+TEST(ContactClip, SquareTurnedByFortyFiveDegreesGivesTheRegularOctagon) {
+  // Overlap of two equal squares of half size h, one turned by 45 deg: a regular octagon
+  // whose vertices lie on the square's edges at +-h (sqrt(2) - 1) from the edge centres.
+  const double h = 0.01;
+  const PlateShape s{h, h, 5e-5};
+  Manifold m;
+  const BodyKin<double> A = kin(Vec3::Zero()), B = kin(Vec3(0, 0, 8e-5), rot_z(kPi / 4));
+  ASSERT_TRUE(clip_plates(A, s, B, s, 0, m));
+  ASSERT_EQ(m.count, 8);
+  std::array<VertexGeometry<double>, 8> g;
+  for (int k = 0; k < 8; ++k) {
+    EXPECT_EQ(m.poly[k].kind, VertexKind::Crossing);
+    g[k] = vertex_geometry(A, s, B, s, m.poly[k]);
+    const double big = std::max(std::abs(g[k].u), std::abs(g[k].v));
+    const double other = std::min(std::abs(g[k].u), std::abs(g[k].v));
+    EXPECT_NEAR(big, h, 1e-15);
+    EXPECT_NEAR(other, h * (std::sqrt(2.0) - 1), 1e-15);
+  }
+  std::array<double, 8> share;
+  // Octagon of apothem h: area 8 h^2 tan(22.5 deg) = 8 h^2 (sqrt(2) - 1) of 4 h^2.
+  ASSERT_TRUE(vertex_shares(g.data(), 8, 4 * h * h, 4 * h * h, share.data()));
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(share[k], 2 * (std::sqrt(2.0) - 1) / 8, 1e-14);
+}
+
+TEST(ContactClip, PartialOverlapKeepsCornersOfBothPlatesAndCrossings) {
+  // Equal plates [-0.01, 0.01] x [-0.005, 0.005], the upper one shifted by (0.01, 0.002):
+  // overlap [0, 0.01] x [-0.003, 0.005] with one corner of each plate and two crossings.
+  const PlateShape s{0.01, 0.005, 5e-5};
+  Manifold m;
+  const BodyKin<double> A = kin(Vec3::Zero()), B = kin(Vec3(0.01, 0.002, 9e-5));
+  ASSERT_TRUE(clip_plates(A, s, B, s, 0, m));
+  ASSERT_EQ(m.count, 4);
+  int count[3] = {0, 0, 0};
+  std::array<VertexGeometry<double>, 8> g;
+  for (int k = 0; k < m.count; ++k) {
+    g[k] = vertex_geometry(A, s, B, s, m.poly[k]);
+    ++count[static_cast<int>(m.poly[k].kind)];
+    if (m.poly[k].kind == VertexKind::Incident) {
+      EXPECT_NEAR(g[k].u, 0.0, 1e-15);
+      EXPECT_NEAR(g[k].v, -0.003, 1e-15);
+    } else if (m.poly[k].kind == VertexKind::Reference) {
+      EXPECT_NEAR(g[k].u, 0.01, 1e-15);
+      EXPECT_NEAR(g[k].v, 0.005, 1e-15);
+    }
+    EXPECT_NEAR(g[k].height, 9e-5, 1e-15);
+  }
+  EXPECT_EQ(count[0], 1);
+  EXPECT_EQ(count[1], 1);
+  EXPECT_EQ(count[2], 2);
+  std::array<double, 8> share;
+  ASSERT_TRUE(vertex_shares(g.data(), m.count, 2e-4, 2e-4, share.data()));
+  double total = 0;
+  for (int k = 0; k < m.count; ++k) total += share[k];
+  EXPECT_NEAR(total, 0.01 * 0.008 / 2e-4, 1e-14);  // overlap fraction
+}
+
+TEST(ContactClip, SeparatedProjectionsGiveNoPolygon) {
+  const PlateShape s{0.01, 0.01, 5e-5};
+  Manifold m;
+  EXPECT_FALSE(clip_plates(kin(Vec3::Zero()), s, kin(Vec3(0.03, 0, 0)), s, 0, m));
+}
+
+TEST(ContactBroadphase, GridFindsExactlyTheOverlappingBoxes) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(0, 0.2), ang(-kPi, kPi);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 400; ++i) {
+    const Mat3 R = Eigen::AngleAxisd(ang(rng), Vec3(ang(rng), ang(rng), ang(rng)).normalized())
+                       .toRotationMatrix();
+    boxes.push_back(
+        plate_aabb(Vec3(pos(rng), pos(rng), 0.1 * pos(rng)), R, Vec3(0.01, 0.02, 1e-4), 0));
+  }
+  // A clamped plate much larger than the rest, and a few mid-sized ones.
+  boxes.push_back(plate_aabb(Vec3(0.1, 0.1, 0), Mat3::Identity(), Vec3(0.3, 0.25, 1e-4), 0));
+  for (int i = 0; i < 5; ++i)
+    boxes.push_back(
+        plate_aabb(Vec3(pos(rng), pos(rng), 0.01), rot_z(ang(rng)), Vec3(0.08, 0.04, 1e-4), 0));
+  const int n = static_cast<int>(boxes.size());
+  std::vector<std::pair<int, int>> brute;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      bool overlap = true;
+      for (int k = 0; k < 3; ++k)
+        overlap = overlap && boxes[i].lo[k] <= boxes[j].hi[k] && boxes[j].lo[k] <= boxes[i].hi[k];
+      if (overlap) brute.emplace_back(i, j);
+    }
+  BroadPhase sap;
+  const auto found = sap.find_pairs(boxes);
+  EXPECT_GT(brute.size(), 50u);
+  EXPECT_EQ(found, brute);
+}
+
+TEST(ContactLaws, StepAndFrictionCoefficientMatchTheirDefinitions) {
+  EXPECT_DOUBLE_EQ(step3(-1.0, 0, 2, 1, 5), 2.0);
+  EXPECT_DOUBLE_EQ(step3(2.0, 0, 2, 1, 5), 5.0);
+  EXPECT_DOUBLE_EQ(step3(0.5, 0, 2, 1, 5), 3.5);
+  EXPECT_NEAR(step3(0.25, 0, 0, 1, 1), 0.25 * 0.25 * (3 - 0.5), 1e-15);
+  ContactDef c;
+  c.mu_static = 0.5;
+  c.mu_dynamic = 0.3;
+  c.stiction_speed = 1e-3;
+  c.friction_speed = 3e-3;
+  EXPECT_DOUBLE_EQ(friction_coefficient(c, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(friction_coefficient(c, 1e-3), 0.5);
+  EXPECT_DOUBLE_EQ(friction_coefficient(c, 2e-3), 0.4);
+  EXPECT_DOUBLE_EQ(friction_coefficient(c, 1.0), 0.3);
+  // Odd cubic through 0: mu(v_s / 2) = mu_s * s^2 (3 - 2 s) * 2 - mu_s with s = 3/4.
+  EXPECT_NEAR(friction_coefficient(c, 0.5e-3), 0.5 * (2 * 0.5625 * 1.5 - 1), 1e-15);
+  // The force law is continuous through its small-speed branch.
+  const Vec3 slow(1e-7, 0, 0), slower(0.99e-7, 0, 0);
+  const double f1 = continuous_friction(c, 2.0, slow).x();
+  const double f2 = continuous_friction(c, 2.0, Vec3(1.001e-6, 0, 0)).x();
+  EXPECT_NEAR(f1, -2.0 * friction_coefficient(c, 1e-7), 1e-12);
+  EXPECT_NEAR(f2, -2.0 * friction_coefficient(c, 1.001e-6), 1e-12);
+  EXPECT_NEAR(continuous_friction(c, 2.0, slower).x(), -2.0 * friction_coefficient(c, 0.99e-7),
+              1e-12);
+}
+
+TEST(ContactLaws, NormalForceIsImpactAndNeverAttractive) {
+  ContactDef c;
+  c.stiffness = 2e5;
+  c.exponent = 1.5;
+  c.damping = 3.0;
+  c.damping_depth = 1e-5;
+  const double d = 4e-6;
+  const double s = 0.4, step = s * s * (3 - 2 * s);
+  EXPECT_NEAR(normal_force(c, d, 0.01, 0), 2e5 * std::pow(d, 1.5) + 3.0 * step * 0.01, 1e-15);
+  EXPECT_NEAR(normal_force(c, 2e-5, 0.01, 0), 2e5 * std::pow(2e-5, 1.5) + 0.03, 1e-15);
+  EXPECT_EQ(normal_force(c, d, -10.0, 0), 0.0);  // fast separation: no pull
+  EXPECT_EQ(normal_force(c, -1e-6, 1.0, 0), 0.0);
+  c.damping_law = ContactDamping::HuntCrossley;
+  c.restitution = 0.6;
+  EXPECT_NEAR(normal_force(c, d, 0.1, 0.5), 2e5 * std::pow(d, 1.5) * (1 + 1.5 * 0.4 * 0.1 / 0.5),
+              1e-15);
+  c.damping_law = ContactDamping::LankaraniNikravesh;
+  EXPECT_NEAR(normal_force(c, d, 0.1, 0.5),
+              2e5 * std::pow(d, 1.5) * (1 + 0.75 * (1 - 0.36) * 0.1 / 0.5), 1e-15);
+  c.damping_law = ContactDamping::Flores;
+  EXPECT_NEAR(normal_force(c, d, 0.1, 0.5),
+              2e5 * std::pow(d, 1.5) * (1 + 8 * 0.4 / (5 * 0.6) * 0.1 / 0.5), 1e-15);
+}
+
+TEST(ContactLaws, SuggestionCarriesTheChosenMultipleOfTheWeight) {
+  const double m = 1.6e-5, g = 9.81, depth = 1e-5;
+  const ContactSuggestion s = suggest_contact(m, g, depth, 1.5, 100, 1.0);
+  EXPECT_NEAR(s.stiffness * std::pow(depth, 1.5), 100 * m * g, 1e-15);
+  const double k_lin = 1.5 * 100 * m * g / depth;
+  EXPECT_NEAR(s.damping, 2 * std::sqrt(k_lin * m), 1e-15);
+  EXPECT_NEAR(s.period, 2 * kPi / std::sqrt(k_lin / m), 1e-15);
+  EXPECT_THROW(suggest_contact(-1, g, depth), InputError);
+  EXPECT_THROW(suggest_contact(m, g, 0), InputError);
+  EXPECT_THROW(suggest_contact(m, g, depth, 0.5), InputError);
+}
+
+// A small model with two free plates (and optionally a fixed one), dofs set by hand.
+struct TwoPlates {
+  Model model;
+  State state;
+  explicit TwoPlates(FrictionModel friction) {
+    for (int i = 0; i < 2; ++i) {
+      BodyDef b;
+      b.name = fmt::format("p{}", i);
+      b.mass = 1e-3;
+      b.size = Vec3(0.02 + 0.01 * i, 0.01, 2e-4);
+      b.J_B = Mat3::Identity() * 1e-8;
+      model.bodies.push_back(b);
+    }
+    model.dof_of_body = {0, 6};
+    model.num_dofs = 12;
+    ContactDef& c = model.contact;
+    c.enabled = true;
+    c.stiffness = 1e6;
+    c.exponent = 1.5;
+    c.damping = 5;
+    c.damping_depth = 5e-5;
+    c.friction = friction;
+    c.mu_static = 0.5;
+    c.mu_dynamic = 0.4;
+    c.stiction_speed = 1e-3;
+    c.friction_speed = 5e-3;
+    c.tangential_stiffness = 300;
+    c.tangential_damping = 0.1;
+    state.p_W = {Vec3(0, 0, 0), Vec3(0.002, 0.001, 1.9e-4)};
+    state.R_WB = {
+        Mat3::Identity(),
+        Eigen::AngleAxisd(0.01, Vec3(0.3, 1, 0.2).normalized()).toRotationMatrix() * rot_z(0.3)};
+    state.v_W = {Vec3(0.001, -0.002, 0.01), Vec3(-0.003, 0.0005, -0.02)};
+    state.w_W = {Vec3(0.1, -0.2, 0.3), Vec3(0.05, 0.1, -0.2)};
+    state.drive_s = {};
+  }
+};
+
+Eigen::VectorXd contact_gforce(const Model& m, const State& s) {
+  BodyForces f;
+  f.f_W.assign(m.bodies.size(), Vec3::Zero());
+  f.tau_W.assign(m.bodies.size(), Vec3::Zero());
+  Assembler as(m, s, f, false);
+  add_contact_forces(m, s, as);
+  Eigen::VectorXd g(m.num_dofs);
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    if (m.dof_of_body[i] < 0) continue;
+    g.segment<3>(m.dof_of_body[i]) = f.f_W[i];
+    g.segment<3>(m.dof_of_body[i] + 3) = f.tau_W[i];
+  }
+  return g;
+}
+
+void check_jacobian(FrictionModel friction, bool with_anchor) {
+  TwoPlates tp(friction);
+  if (with_anchor) {
+    commit_contact_history(tp.model, tp.state);
+    ASSERT_FALSE(tp.state.contact.anchors.empty());
+    tp.state.p_W[1] += Vec3(2e-5, -1e-5, 0);  // load the anchor springs
+  }
+  const ContactSummary sum = contact_summary(tp.model, tp.state);
+  ASSERT_GE(sum.active, 1);
+  BodyForces f;
+  f.f_W.assign(2, Vec3::Zero());
+  f.tau_W.assign(2, Vec3::Zero());
+  Assembler as(tp.model, tp.state, f, true);
+  add_contact_forces(tp.model, tp.state, as);
+  Eigen::SparseMatrix<double> dq(12, 12), dv(12, 12);
+  dq.setFromTriplets(as.dq_triplets.begin(), as.dq_triplets.end());
+  dv.setFromTriplets(as.dv_triplets.begin(), as.dv_triplets.end());
+  const Eigen::MatrixXd Jq(dq), Jv(dv);
+  const Eigen::VectorXd g0 = contact_gforce(tp.model, tp.state);
+  EXPECT_GT(g0.norm(), 0);
+  for (int col = 0; col < 12; ++col) {
+    const int body = col / 6, c = col % 6;
+    for (int which = 0; which < 2; ++which) {  // 0: pose, 1: velocity
+      const double h = which == 0 ? 1e-9 : 1e-7;
+      Eigen::VectorXd gp, gm;
+      for (int sgn = -1; sgn <= 1; sgn += 2) {
+        State s = tp.state;
+        if (which == 0) {
+          if (c < 3) {
+            s.p_W[body][c] += sgn * h;
+          } else {
+            Vec3 dphi = Vec3::Zero();
+            dphi[c - 3] = sgn * h;
+            s.R_WB[body] = so3_exp<double>(dphi) * s.R_WB[body];
+          }
+        } else {
+          (c < 3 ? s.v_W[body][c] : s.w_W[body][c - 3]) += sgn * h;
+        }
+        (sgn < 0 ? gm : gp) = contact_gforce(tp.model, s);
+      }
+      const Eigen::VectorXd fd = (gp - gm) / (2 * h);
+      const Eigen::VectorXd ad = which == 0 ? Jq.col(col) : Jv.col(col);
+      const double scale = std::max(1.0, fd.norm());
+      EXPECT_LT((fd - ad).norm(), 1e-5 * scale)
+          << "column " << col << (which == 0 ? " (pose)" : " (velocity)") << "\nfd "
+          << fd.transpose() << "\nad " << ad.transpose();
+    }
+  }
+}
+
+TEST(ContactJacobian, MatchesCentralDifferencesFrictionless) {
+  check_jacobian(FrictionModel::None, false);
+}
+TEST(ContactJacobian, MatchesCentralDifferencesContinuousFriction) {
+  check_jacobian(FrictionModel::Continuous, false);
+}
+TEST(ContactJacobian, MatchesCentralDifferencesAnchorFriction) {
+  check_jacobian(FrictionModel::Anchor, true);
+}
+
+TEST(ContactForces, ForcesBalanceAndPushThePlatesApart) {
+  TwoPlates tp(FrictionModel::Continuous);
+  BodyForces f;
+  f.f_W.assign(2, Vec3::Zero());
+  f.tau_W.assign(2, Vec3::Zero());
+  Assembler as(tp.model, tp.state, f, false);
+  add_contact_forces(tp.model, tp.state, as);
+  EXPECT_NEAR((f.f_W[0] + f.f_W[1]).norm(), 0, 1e-12 * f.f_W[0].norm());
+  // Angular momentum: total moment about the origin vanishes.
+  const Vec3 m =
+      f.tau_W[0] + tp.state.p_W[0].cross(f.f_W[0]) + f.tau_W[1] + tp.state.p_W[1].cross(f.f_W[1]);
+  EXPECT_LT(m.norm(), 1e-12 * f.f_W[0].norm());
+  EXPECT_GT(f.f_W[1].z(), 0);  // upper plate pushed up
+}
+
+// Chain of 2 x 3 segments cut from one sheet, joined by force elements, panel 0 and 1
+// folded flat onto each other across the crease between columns 0 and 1... (hand-built).
+Model folded_strip(double gap) {
+  Model m;
+  const double L = 0.01, W = 0.01, t = 1e-4;
+  // Panel 0: segments 0..3 along +x at z = 0, s from 0 to 4L. Panel 1: segments 4..7 folded
+  // back over it at height gap, s from 4L to 8L (segment 4 next to the crease at x = 4L).
+  for (int i = 0; i < 8; ++i) {
+    BodyDef b;
+    b.name = fmt::format("s{}", i);
+    b.mass = 1e-4;
+    b.size = Vec3(L, W, t);
+    b.J_B = Mat3::Identity() * 1e-9;
+    b.panel = i < 4 ? 0 : 1;
+    b.s_min = i * L;
+    b.s_max = (i + 1) * L;
+    b.y_min = 0;
+    b.y_max = W;
+    if (i < 4) {
+      b.p0_W = Vec3((i + 0.5) * L, 0, 0);
+    } else {
+      b.p0_W = Vec3((7 - i + 0.5) * L, 0, gap);
+      b.R0_WB = Eigen::AngleAxisd(kPi, Vec3::UnitY()).toRotationMatrix();
+    }
+    m.bodies.push_back(b);
+  }
+  for (int i = 0; i < 7; ++i) {
+    ElementDef e;
+    e.inner = i + 1;
+    e.outer = i;
+    m.elements.push_back(e);
+  }
+  m.contact.enabled = true;
+  m.contact.stiffness = 1e5;
+  m.contact.exponent = 1.5;
+  m.contact.damping_depth = 1e-5;
+  return m;
+}
+
+TEST(ContactRules, FoldedPanelsTouchButJoinedAndSameSheetNeighboursDoNot) {
+  Model m = folded_strip(0.9e-4);
+  m.dof_of_body.assign(8, -1);
+  for (int i = 0; i < 8; ++i) m.dof_of_body[i] = 6 * i;
+  State s;
+  for (const BodyDef& b : m.bodies) {
+    s.p_W.push_back(b.p0_W);
+    s.R_WB.push_back(b.R0_WB);
+    s.v_W.push_back(Vec3::Zero());
+    s.w_W.push_back(Vec3::Zero());
+  }
+  const ContactSummary sum = contact_summary(m, s);
+  // Facing pairs across the fold: (0,7), (1,6), (2,5), (3,4); (3,4) are joined and share the
+  // crease edge, so only three pairs of four corners each touch; coplanar neighbours in a
+  // panel never do.
+  EXPECT_EQ(sum.active, 12);
+  EXPECT_NEAR(sum.max_penetration, 1e-5, 1e-12);
+  for (const Vec3& p : sum.points_W) EXPECT_LT(p.x(), 3 * 0.01 + 1e-9);
+}
+
+}  // namespace
+}  // namespace finseg
+
+namespace finseg {
+namespace {
+
+// The paper's zigzag in its initial state (80 deg, panels 20 deg apart at the creases), one
+// and two segments across: no false contact anywhere, although neighbouring segments share
+// edges and corners, also across the creases.
+TEST(ContactRules, GeneratedZigzagHasNoFalseContact) {
+  for (int across : {1, 2}) {
+    ZigzagSpec spec;
+    spec.segments_across = across;
+    Model m = build_zigzag_model(spec);
+    m.contact.enabled = true;
+    m.contact.stiffness = 3e7;
+    const State s = initial_state(m);
+    EXPECT_EQ(contact_summary(m, s).active, 0) << across << " across";
+    // Folded much further (panels 2 deg apart) the faces near the creases do touch.
+    spec.fold_angle = 89.9 * kDegToRad;
+    Model tight = build_zigzag_model(spec);
+    tight.contact = m.contact;
+    const ContactSummary c = contact_summary(tight, initial_state(tight));
+    EXPECT_GT(c.active, 0) << across << " across";
+  }
+}
+
+}  // namespace
+}  // namespace finseg
