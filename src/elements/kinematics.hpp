@@ -2,10 +2,13 @@
 // with double (forces) and with forward-mode autodiff (exact Jacobian blocks).
 #pragma once
 
+// Eigen/Dense must come before the AutoDiff module.
+#include "core/types.hpp"
+// clang-format off
 #include <unsupported/Eigen/AutoDiff>
+// clang-format on
 
 #include "core/so3.hpp"
-#include "core/types.hpp"
 
 namespace finseg {
 
