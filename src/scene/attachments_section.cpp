@@ -1,0 +1,163 @@
+// Fixtures by body name, loads, drives and probes of a scene file (docs/scene.md).
+#include <fmt/format.h>
+
+#include <map>
+
+#include "generators/sheet.hpp"
+#include "scene/scene_parts.hpp"
+
+namespace finseg {
+namespace {
+
+std::string body_names_hint(const Model& m) {
+  if (m.bodies.empty()) return "the model has no body";
+  return fmt::format("bodies are {} .. {} ({} in all; finseg inspect lists them)",
+                     m.bodies.front().name, m.bodies.back().name, m.bodies.size());
+}
+
+int body_by_name(const Model& m, const std::string& name, const YamlContext& ctx) {
+  const int b = m.body_index(name);
+  if (b < 0) {
+    throw InputError(ctx.file, ctx.field,
+                     fmt::format("'{}' is not a body of the model; {}", name, body_names_hint(m)));
+  }
+  return b;
+}
+
+// Where a load, drive or point probe attaches: `at: {s, y}` (material point on the flat
+// sheet, m) or `body: NAME` with `point: [x, y, z]` in that body's frame (m).
+MaterialPoint read_location(const Fields& f, const Model& m) {
+  if (f.has("at")) {
+    if (f.has("body") || f.has("point")) f.fail("at", "give either at: {s, y} or body (+ point)");
+    const Fields at(f.node("at"), f.context("at"), {"s", "y"});
+    const double s = at.number("s", interval(0, m.sheet.length, false, false, "m"));
+    const double y = at.number("y", interval(0, m.sheet.width, false, false, "m"));
+    MaterialPoint p;
+    in_scene_file(
+        f.context().file, [&] { p = locate_material_point(m, s, y); },
+        [&](const std::string&) { return f.field("at"); });
+    return p;
+  }
+  if (!f.has("body")) f.fail("at", "required: at: {s, y} (m) or body: NAME");
+  MaterialPoint p;
+  p.body = body_by_name(m, f.word("body", ""), f.context("body"));
+  p.r_B = f.vector3("point", Vec3::Zero(), "m, body frame");
+  return p;
+}
+
+void read_fixed_bodies(const Fields& root, Model& m) {
+  const Fields fix(root.node("fixtures"), root.context("fixtures"),
+                   {"clamp_start", "panels", "bodies"});
+  const std::vector<std::string> names = fix.words("bodies");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const YamlContext ctx{fix.context().file, item_field(fix.field("bodies"), i)};
+    m.bodies[body_by_name(m, names[i], ctx)].fixed = true;
+  }
+}
+
+void read_loads(const Fields& root, Model& m) {
+  const auto items = sequence(root.node("loads"), root.context("loads"), "loads");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const Fields f(items[i], {root.context().file, item_field("loads", i)},
+                   {"name", "at", "body", "point", "force", "moment", "follower"});
+    const MaterialPoint p = read_location(f, m);
+    LoadDef l;
+    l.body = p.body;
+    l.point_B = p.r_B;
+    l.force = f.vector3("force", Vec3::Zero(), "N");
+    l.moment = f.vector3("moment", Vec3::Zero(), "N m");
+    l.follower = f.flag("follower", false);
+    m.loads.push_back(l);
+  }
+}
+
+void read_drives(const Fields& root, bool zigzag, Model& m) {
+  const auto items = sequence(root.node("drives"), root.context("drives"), "drives");
+  if (zigzag && !items.empty()) {
+    root.fail("drives", "a zigzag scene has one drive, 'gauge', set by the zigzag: pull_* keys");
+  }
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const Fields f(items[i], {root.context().file, item_field("drives", i)},
+                   {"name", "at", "body", "point", "direction", "stiffness", "damping", "speed",
+                    "travel", "step"});
+    DriveDef d;
+    d.name = f.required_word("name");
+    for (const DriveDef& other : m.drives) {
+      if (other.name == d.name) f.fail("name", "'" + d.name + "' is used twice; names must differ");
+    }
+    const MaterialPoint p = read_location(f, m);
+    d.body = p.body;
+    d.point_B = p.r_B;
+    d.start_W = m.bodies[p.body].p0_W + m.bodies[p.body].R0_WB * p.r_B;
+    const Vec3 dir = f.vector3("direction", Vec3::UnitZ(), "unit vector");
+    if (!(dir.norm() > 0)) f.fail("direction", "must be a non-zero vector");
+    d.direction_W = dir / dir.norm();
+    d.stiffness = f.number("stiffness", positive("N/m"));
+    d.damping = f.number("damping", 0.0, non_negative("N s/m"));
+    d.travel = f.number("travel", 0.0, non_negative("m"));
+    d.step = f.number("step", 0.0, non_negative("m"));
+    d.speed = f.number("speed", d.travel, non_negative("m/s"));
+    if (d.travel > 0 && !(d.step > 0) && i == 0) {
+      f.fail("step", "required (> 0 m) with travel > 0: the static solver's pull increment");
+    }
+    m.drives.push_back(d);
+  }
+}
+
+ProbeKind probe_kind(const Fields& f) {
+  static const std::map<std::string, ProbeKind> kinds{{"point", ProbeKind::Point},
+                                                      {"drive", ProbeKind::Drive},
+                                                      {"reaction", ProbeKind::Reaction},
+                                                      {"energy", ProbeKind::Energy},
+                                                      {"contact", ProbeKind::Contact}};
+  const std::string type = f.required_word("type");
+  const auto it = kinds.find(type);
+  if (it == kinds.end()) {
+    f.fail("type", "'" + type + "'; allowed: point, drive, reaction, energy, contact");
+  }
+  return it->second;
+}
+
+void read_probes(const Fields& root, Model& m) {
+  if (!root.has("probes")) return;  // keep the generator's probes
+  m.probes.clear();
+  const auto items = sequence(root.node("probes"), root.context("probes"), "probes");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const Fields f(items[i], {root.context().file, item_field("probes", i)},
+                   {"name", "type", "at", "body", "point", "drive"});
+    ProbeDef p;
+    p.name = f.required_word("name");
+    if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
+      f.fail("name",
+             "'" + p.name + "'; must be a non-empty file-name-safe word (no / \\ or space)");
+    }
+    for (const ProbeDef& other : m.probes) {
+      if (other.name == p.name) f.fail("name", "'" + p.name + "' is used twice; names must differ");
+    }
+    p.kind = probe_kind(f);
+    if (p.kind == ProbeKind::Point) {
+      const MaterialPoint at = read_location(f, m);
+      p.body = at.body;
+      p.point_B = at.r_B;
+    } else if (p.kind == ProbeKind::Drive) {
+      const std::string drive = f.required_word("drive");
+      for (std::size_t d = 0; d < m.drives.size(); ++d) {
+        if (m.drives[d].name == drive) p.drive = static_cast<int>(d);
+      }
+      if (p.drive < 0) f.fail("drive", "'" + drive + "' is not a drive of the scene");
+    }
+    m.probes.push_back(p);
+  }
+}
+
+}  // namespace
+
+void read_attachments(const Fields& root, bool zigzag, Model& m) {
+  read_fixed_bodies(root, m);
+  m.finalize_dofs();
+  read_loads(root, m);
+  read_drives(root, zigzag, m);
+  read_probes(root, m);
+}
+
+}  // namespace finseg

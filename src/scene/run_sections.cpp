@@ -1,0 +1,84 @@
+// The `solver:` and `outputs:` sections of a scene file (docs/scene.md).
+#include <algorithm>
+
+#include "scene/scene_parts.hpp"
+
+namespace finseg {
+
+std::string solver_name(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::Explicit:
+      return "explicit";
+    case SolverKind::Implicit:
+      return "implicit";
+    case SolverKind::Static:
+      break;
+  }
+  return "static";
+}
+
+SolverSettings read_solver_section(const Fields& root) {
+  const Fields f(root.node("solver"), root.context("solver"),
+                 {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol",
+                  "load_steps", "max_iterations", "tolerance"});
+  SolverSettings s;
+  const std::string type = f.word("type", "static");
+  if (type == "static") {
+    s.kind = SolverKind::Static;
+  } else if (type == "implicit") {
+    s.kind = SolverKind::Implicit;
+  } else if (type == "explicit") {
+    s.kind = SolverKind::Explicit;
+  } else {
+    f.fail("type", "'" + type + "'; allowed: static, implicit, explicit");
+  }
+  s.t_end = f.number("t_end", s.t_end, positive("s"));
+  s.output_interval =
+      f.number("output_interval", s.output_interval, non_negative("s (0: t_end/100)"));
+  s.dt = f.number("dt", s.dt, non_negative("s (0: automatic)"));
+  s.dt_min = f.number("dt_min", s.dt_min, positive("s"));
+  s.dt_max = f.number("dt_max", s.dt_max, non_negative("s (0: output_interval)"));
+  s.rtol = f.number("rtol", s.rtol, positive(""));
+  s.atol = f.number("atol", s.atol, positive("m and rad"));
+  s.load_steps = f.integer("load_steps", s.load_steps, 1, 1000000);
+  s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);
+  s.tolerance = f.number("tolerance", s.tolerance, positive("(relative)"));
+  if (s.dt > s.t_end) f.fail("dt", "must not exceed t_end");
+  return s;
+}
+
+OutputSettings read_outputs_section(const Fields& root, const Model& m) {
+  const Fields f(root.node("outputs"), root.context("outputs"), {"vtk", "html", "plot", "phases"});
+  const bool pulled = !m.drives.empty();
+  OutputSettings o;
+  o.vtk = f.flag("vtk", pulled);
+  o.html = f.flag("html", pulled);
+  o.plot = f.flag("plot", pulled);
+  int panels = 1;
+  for (const BodyDef& b : m.bodies) panels = std::max(panels, b.panel + 1);
+  PhaseSettings& p = o.phases;
+  const auto watched_exist = [&] {
+    return std::all_of(p.panels.begin(), p.panels.end(), [&](int q) { return q <= panels; });
+  };
+  p.enabled = pulled && watched_exist();
+  const YAML::Node node = f.node("phases");
+  if (node && node.IsScalar()) {
+    p.enabled = f.flag("phases", p.enabled);
+  } else if (node) {
+    const Fields ph(node, f.context("phases"), {"enabled", "panels", "bend_threshold_deg"});
+    p.enabled = ph.flag("enabled", true);
+    if (ph.has("panels")) p.panels = ph.integers("panels", 1, panels);
+    if (p.panels.empty()) ph.fail("panels", "must list at least one panel (1-based)");
+    p.bend_threshold =
+        ph.number("bend_threshold_deg", p.bend_threshold / kDegToRad, positive("deg")) * kDegToRad;
+  }
+  if (p.enabled && m.drives.empty()) {
+    f.fail("phases", "deployment phases need a drive (the pull displacement)");
+  }
+  if (p.enabled && !watched_exist()) {
+    f.fail("phases", "watched panels must exist (1.." + std::to_string(panels) + ")");
+  }
+  return o;
+}
+
+}  // namespace finseg

@@ -1,0 +1,49 @@
+// Scene files (YAML, docs/scene.md): material, sheet, discretisation, fixtures, loads,
+// drives, probes, contact, solver and outputs -> a Model plus run settings.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+#include "solvers/solver.hpp"
+
+namespace finseg {
+
+/// Deployment-phase detection of a pull test (probes/deployment_phases.hpp).
+struct PhaseSettings {
+  bool enabled = false;
+  std::vector<int> panels{2, 5};          ///< watched panels, 1-based
+  double bend_threshold = 5 * kDegToRad;  ///< rad (scene key bend_threshold_deg)
+};
+
+/// What `finseg run` writes besides the probe CSVs and summary.json (scene `outputs:`).
+/// Defaults: all on for scenes with a drive, off otherwise.
+struct OutputSettings {
+  bool vtk = false;   ///< DIR/vtk/frames.pvd + .vtu
+  bool html = false;  ///< DIR/animation.html
+  bool plot = false;  ///< DIR/<drive probe>.png: force against pull displacement
+  PhaseSettings phases;
+};
+
+/// A scene read from a file: the model and how to run it.
+struct Scene {
+  std::string file;     ///< path it was read from
+  std::string title;    ///< optional `title:`
+  bool zigzag = false;  ///< built by the zigzag generator (`zigzag:` section)
+  Model model;
+  SolverSettings solver;
+  OutputSettings outputs;
+};
+
+/// Reads and validates a scene file (read once). Throws InputError naming the file, the
+/// dotted field and the allowed range.
+Scene read_scene(const std::string& path);
+
+/// Same from YAML text; `file` names it in messages and resolves relative data files.
+Scene parse_scene(const std::string& yaml, const std::string& file);
+
+/// Name of a solver kind as written in scene files: static, implicit, explicit.
+std::string solver_name(SolverKind kind);
+
+}  // namespace finseg

@@ -1,0 +1,198 @@
+#include "scene/yaml_fields.hpp"
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace finseg {
+
+bool Range::contains(double x) const {
+  if (!std::isfinite(x)) return false;
+  const bool lo = min_open ? x > min : x >= min;
+  const bool hi = max_open ? x < max : x <= max;
+  return lo && hi;
+}
+
+std::string Range::describe() const {
+  const std::string u = unit.empty() ? "" : " " + unit;
+  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
+  if (has_min && has_max) {
+    return fmt::format("{}{:g}, {:g}{}{}", min_open ? "(" : "[", min, max, max_open ? ")" : "]", u);
+  }
+  if (has_min) return fmt::format("{} {:g}{}", min_open ? ">" : ">=", min, u);
+  if (has_max) return fmt::format("{} {:g}{}", max_open ? "<" : "<=", max, u);
+  return "any finite number" + (unit.empty() ? std::string() : " (" + unit + ")");
+}
+
+Range positive(const std::string& unit) {
+  return {0.0, INFINITY, true, false, unit};
+}
+Range non_negative(const std::string& unit) {
+  return {0.0, INFINITY, false, false, unit};
+}
+Range any_finite(const std::string& unit) {
+  return {-INFINITY, INFINITY, false, false, unit};
+}
+Range interval(double a, double b, bool a_open, bool b_open, const std::string& unit) {
+  return {a, b, a_open, b_open, unit};
+}
+
+std::string child_field(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string item_field(const std::string& list, std::size_t i) {
+  return fmt::format("{}[{}]", list, i);
+}
+
+double read_number_at(const YAML::Node& node, const YamlContext& ctx, const Range& range) {
+  if (!node.IsScalar()) {
+    throw InputError(ctx.file, ctx.field, "must be a number; allowed range " + range.describe());
+  }
+  double x = 0;
+  try {
+    x = node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(
+        ctx.file, ctx.field,
+        fmt::format("'{}' is not a number; allowed range {}", node.Scalar(), range.describe()));
+  }
+  if (!range.contains(x)) {
+    throw InputError(ctx.file, ctx.field,
+                     fmt::format("{}{}; allowed range {}", x,
+                                 range.unit.empty() ? "" : " " + range.unit, range.describe()));
+  }
+  return x;
+}
+
+std::vector<YAML::Node> sequence(const YAML::Node& node, const YamlContext& ctx,
+                                 const std::string& what) {
+  std::vector<YAML::Node> items;
+  if (!node || node.IsNull()) return items;
+  if (!node.IsSequence()) throw InputError(ctx.file, ctx.field, "must be a list of " + what);
+  for (std::size_t i = 0; i < node.size(); ++i) items.push_back(node[i]);
+  return items;
+}
+
+Fields::Fields(const YAML::Node& node, YamlContext ctx, const std::set<std::string>& allowed)
+    : node_(node), ctx_(std::move(ctx)) {
+  if (!node_ || node_.IsNull()) {
+    node_ = YAML::Node(YAML::NodeType::Map);
+    return;
+  }
+  if (!node_.IsMap()) {
+    throw InputError(ctx_.file, ctx_.field.empty() ? "<top level>" : ctx_.field,
+                     "must be a map of key: value pairs");
+  }
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (!allowed.count(key)) {
+      std::string list;
+      for (const std::string& k : allowed) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(ctx_.file, field(key), "unknown key; allowed: " + list);
+    }
+  }
+}
+
+void Fields::fail(const std::string& key, const std::string& what) const {
+  throw InputError(ctx_.file, field(key), what);
+}
+
+double Fields::number(const std::string& key, const Range& range) const {
+  if (!has(key)) fail(key, "required; allowed range " + range.describe());
+  return read_number_at(node_[key], context(key), range);
+}
+
+double Fields::number(const std::string& key, double fallback, const Range& range) const {
+  return has(key) ? number(key, range) : fallback;
+}
+
+std::optional<double> Fields::optional_number(const std::string& key, const Range& range) const {
+  if (!has(key)) return std::nullopt;
+  return number(key, range);
+}
+
+int Fields::integer(const std::string& key, int fallback, int min, int max) const {
+  if (!has(key)) return fallback;
+  const YAML::Node v = node_[key];
+  const std::string allowed = fmt::format("an integer in [{}, {}]", min, max);
+  long long x = 0;
+  try {
+    if (!v.IsScalar()) throw YAML::Exception(YAML::Mark(), "");
+    x = v.as<long long>();
+  } catch (const YAML::Exception&) {
+    fail(key, fmt::format("'{}'; must be {}", v.IsScalar() ? v.Scalar() : "?", allowed));
+  }
+  if (x < min || x > max) fail(key, fmt::format("{}; must be {}", x, allowed));
+  return static_cast<int>(x);
+}
+
+bool Fields::flag(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  try {
+    if (!node_[key].IsScalar()) throw YAML::Exception(YAML::Mark(), "");
+    return node_[key].as<bool>();
+  } catch (const YAML::Exception&) {
+    fail(key, "must be true or false");
+  }
+}
+
+std::string Fields::word(const std::string& key, const std::string& fallback) const {
+  if (!has(key)) return fallback;
+  if (!node_[key].IsScalar()) fail(key, "must be a single word or string");
+  return node_[key].Scalar();
+}
+
+std::string Fields::required_word(const std::string& key) const {
+  if (!has(key)) fail(key, "required");
+  return word(key, "");
+}
+
+Vec3 Fields::vector3(const std::string& key, const Vec3& fallback, const std::string& unit) const {
+  if (!has(key)) return fallback;
+  const YAML::Node v = node_[key];
+  if (!v.IsSequence() || v.size() != 3) {
+    fail(key, fmt::format("must be a list of three numbers [x, y, z] ({})", unit));
+  }
+  Vec3 out;
+  for (int i = 0; i < 3; ++i) {
+    out[i] = read_number_at(v[i], {ctx_.file, item_field(field(key), i)}, any_finite(unit));
+  }
+  return out;
+}
+
+std::vector<int> Fields::integers(const std::string& key, int min, int max) const {
+  std::vector<int> out;
+  const auto items = sequence(node_[key], context(key), "integers");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string f = item_field(field(key), i);
+    double x = read_number_at(items[i], {ctx_.file, f}, interval(min, max, false, false));
+    if (x != std::floor(x))
+      throw InputError(ctx_.file, f, fmt::format("{}; must be an integer", x));
+    out.push_back(static_cast<int>(x));
+  }
+  return out;
+}
+
+std::vector<double> Fields::numbers(const std::string& key, const Range& range) const {
+  std::vector<double> out;
+  const auto items = sequence(node_[key], context(key), "numbers");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out.push_back(read_number_at(items[i], {ctx_.file, item_field(field(key), i)}, range));
+  }
+  return out;
+}
+
+std::vector<std::string> Fields::words(const std::string& key) const {
+  std::vector<std::string> out;
+  const auto items = sequence(node_[key], context(key), "names");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (!items[i].IsScalar()) {
+      throw InputError(ctx_.file, item_field(field(key), i), "must be a name");
+    }
+    out.push_back(items[i].Scalar());
+  }
+  return out;
+}
+
+}  // namespace finseg
