@@ -5,6 +5,12 @@
 
 namespace finseg::cli {
 
+/// Thrown by a subcommand that finished its work but must exit non-zero (e.g. 3: the
+/// simulation diverged); main() returns `code`.
+struct ExitStatus {
+  int code = 0;
+};
+
 void register_run(CLI::App& app);       ///< finseg run SCENE --out DIR
 void register_gen(CLI::App& app);       ///< finseg gen cantilever|zigzag ...
 void register_inspect(CLI::App& app);   ///< finseg inspect SCENE

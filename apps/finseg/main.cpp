@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const finseg::cli::ExitStatus& e) {
+    return e.code;
   } catch (const std::exception& e) {
     fmt::print(stderr, "finseg: error: {}\n", e.what());
     return 2;

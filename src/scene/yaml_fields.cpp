@@ -75,11 +75,10 @@ std::vector<YAML::Node> sequence(const YAML::Node& node, const YamlContext& ctx,
 }
 
 Fields::Fields(const YAML::Node& node, YamlContext ctx, const std::set<std::string>& allowed)
-    : node_(node), ctx_(std::move(ctx)) {
-  if (!node_ || node_.IsNull()) {
-    node_ = YAML::Node(YAML::NodeType::Map);
-    return;
-  }
+    // An absent section reads as an empty map (a missing key gives an invalid node, which
+    // must not be assigned to).
+    : node_(node.IsDefined() && !node.IsNull() ? node : YAML::Node(YAML::NodeType::Map)),
+      ctx_(std::move(ctx)) {
   if (!node_.IsMap()) {
     throw InputError(ctx_.file, ctx_.field.empty() ? "<top level>" : ctx_.field,
                      "must be a map of key: value pairs");

@@ -1,0 +1,73 @@
+// Records every probe of a model at each solver output (one table per probe, one row per
+// output), plus animation frames and deployment-phase samples when asked. `finseg run`
+// writes the tables as CSV (docs/scene.md lists the columns).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "elements/assemble.hpp"
+#include "model/model.hpp"
+#include "model/state.hpp"
+#include "probes/deployment_phases.hpp"
+#include "solvers/solver.hpp"
+#include "writers/frames.hpp"
+
+namespace finseg {
+struct ContactSummary;
+}
+
+namespace finseg {
+
+/// Recorded history of one probe; every column name carries its unit (e.g. "z_m").
+struct ProbeTable {
+  std::string name;
+  ProbeKind kind = ProbeKind::Point;
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+};
+
+/// What the run's x axis is: "t_s" (dynamic solvers), "pull_displacement_m" (static solver
+/// pulling its first drive), "load_scale" (static solver, loads only).
+std::string abscissa_column(const Model& model, const SolverSettings& settings);
+
+/// Name of a probe kind as written in scene files.
+std::string probe_kind_name(ProbeKind kind);
+
+struct RecorderOptions {
+  bool frames = false;              ///< keep a Frame per output (VTK, HTML)
+  bool phases = false;              ///< keep a PhaseSample per output
+  std::vector<int> watched_panels;  ///< 0-based panels for PhaseSample::bend
+};
+
+class RunRecorder {
+ public:
+  RunRecorder(const Model& model, const SolverSettings& settings, RecorderOptions options);
+
+  /// Appends one row to every table (and a frame / phase sample). Use as OutputCallback.
+  void record(const State& state, const BodyForces& forces);
+
+  const std::vector<ProbeTable>& tables() const { return tables_; }
+  const std::vector<Frame>& frames() const { return frames_; }
+  const std::vector<PhaseSample>& phase_samples() const { return samples_; }
+  /// Abscissa of the last recorded output (NaN before the first).
+  double last_abscissa() const { return last_x_; }
+  const std::string& abscissa() const { return abscissa_; }
+  std::size_t outputs() const { return outputs_; }  ///< outputs recorded so far
+
+ private:
+  std::vector<double> row(const ProbeDef& p, const State& s, const BodyForces& f,
+                          const ContactSummary* contact) const;
+
+  const Model& model_;
+  RecorderOptions options_;
+  std::string abscissa_;
+  bool dynamic_ = false;
+  std::vector<ProbeTable> tables_;
+  std::vector<Frame> frames_;
+  std::vector<PhaseSample> samples_;
+  double last_x_;
+  std::size_t outputs_ = 0;
+};
+
+}  // namespace finseg
