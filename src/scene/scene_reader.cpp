@@ -33,11 +33,15 @@ Scene parse_scene(const std::string& yaml, const std::string& file) {
        "drives", "probes", "contact", "zigzag", "solver", "outputs"});
   Scene scene;
   scene.file = file;
-  scene.title = root.word("title", "");
-  scene.model = read_structure(root, scene.zigzag);
-  read_attachments(root, scene.zigzag, scene.model);
-  scene.solver = read_solver_section(root);
-  scene.outputs = read_outputs_section(root, scene.model);
+  try {
+    scene.title = root.word("title", "");
+    scene.model = read_structure(root, scene.zigzag);
+    read_attachments(root, scene.zigzag, scene.model);
+    scene.solver = read_solver_section(root);
+    scene.outputs = read_outputs_section(root, scene.model);
+  } catch (const YAML::Exception& e) {  // e.g. a map or list used as a key
+    throw InputError(file, fmt::format("line {}", e.mark.line + 1), e.msg);
+  }
   in_scene_file(file, [&] { validate(scene.model); });
   return scene;
 }
