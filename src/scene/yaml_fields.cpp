@@ -84,7 +84,11 @@ Fields::Fields(const YAML::Node& node, YamlContext ctx, const std::set<std::stri
                      "must be a map of key: value pairs");
   }
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar()) {
+      throw InputError(ctx_.file, ctx_.field.empty() ? "<top level>" : ctx_.field,
+                       fmt::format("line {}: keys must be plain words", kv.first.Mark().line + 1));
+    }
+    const std::string key = kv.first.Scalar();
     if (!allowed.count(key)) {
       std::string list;
       for (const std::string& k : allowed) list += (list.empty() ? "" : ", ") + k;
