@@ -80,7 +80,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   out.f_W.assign(n, Vec3::Zero());
   out.tau_W.assign(n, Vec3::Zero());
   out.potential_energy = 0;
-  Assembler as(model, state, out, jac != nullptr);
+  Assembler as(model, state, out, jac != nullptr, jac != nullptr && jac->with_velocity);
   add_force_elements(model, state, as);
   add_loads_and_gravity(model, state, as);
   add_drives(model, state, as);

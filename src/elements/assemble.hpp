@@ -22,6 +22,9 @@ struct BodyForces {
 struct ForceJacobian {
   Eigen::SparseMatrix<double> dq;
   Eigen::SparseMatrix<double> dv;
+  /// false: only dq is wanted (static solver); dv is left empty and the automatic
+  /// differentiation carries half the derivatives.
+  bool with_velocity = true;
 };
 
 /// Evaluates all forces at `state`; fills `jac` too when it is not null.

@@ -18,8 +18,13 @@ namespace finseg {
 
 class Assembler {
  public:
-  Assembler(const Model& model, const State& state, BodyForces& out, bool want_jacobian)
-      : model_(model), state_(state), out_(out), want_jacobian_(want_jacobian) {}
+  Assembler(const Model& model, const State& state, BodyForces& out, bool want_jacobian,
+            bool want_velocity_jacobian = true)
+      : model_(model),
+        state_(state),
+        out_(out),
+        want_jacobian_(want_jacobian),
+        want_velocity_(want_velocity_jacobian) {}
 
   bool want_jacobian() const { return want_jacobian_; }
   const Model& model() const { return model_; }
@@ -40,13 +45,11 @@ class Assembler {
       add(b, wb);
       return;
     }
-    using AD = AutoDiff<24>;
-    const BodyKin<AD> A = seeded<24>(a, 0, 2), B = seeded<24>(b, 1, 2);
-    Wrench<AD> wa, wb;
-    out_.potential_energy += value_of(kernel(A, B, wa, wb));
-    const int bodies[2] = {a, b};
-    scatter<24>(a, wa, bodies, 2);
-    scatter<24>(b, wb, bodies, 2);
+    if (want_velocity_) {
+      pair_jacobian<24>(a, b, kernel);
+    } else {
+      pair_jacobian<12>(a, b, kernel);
+    }
   }
 
   /// Adds a one-body load.
@@ -58,12 +61,11 @@ class Assembler {
       add(a, wa);
       return;
     }
-    using AD = AutoDiff<12>;
-    const BodyKin<AD> A = seeded<12>(a, 0, 1);
-    Wrench<AD> wa;
-    out_.potential_energy += value_of(kernel(A, wa));
-    const int bodies[1] = {a};
-    scatter<12>(a, wa, bodies, 1);
+    if (want_velocity_) {
+      single_jacobian<12>(a, kernel);
+    } else {
+      single_jacobian<6>(a, kernel);
+    }
   }
 
   /// Adds a plain wrench with no Jacobian contribution (constant loads).
@@ -78,7 +80,30 @@ class Assembler {
   std::vector<Eigen::Triplet<double>> dq_triplets, dv_triplets;
 
  private:
-  // Slot s of n bodies: pose variables at 6s..6s+5, velocities at 6n+6s..6n+6s+5.
+  // N derivatives: poses of both bodies (12), plus their velocities when N = 24.
+  template <int N, class Kernel>
+  void pair_jacobian(int a, int b, Kernel& kernel) {
+    using AD = AutoDiff<N>;
+    const BodyKin<AD> A = seeded<N>(a, 0, 2), B = seeded<N>(b, 1, 2);
+    Wrench<AD> wa, wb;
+    out_.potential_energy += value_of(kernel(A, B, wa, wb));
+    const int bodies[2] = {a, b};
+    scatter<N>(a, wa, bodies, 2);
+    scatter<N>(b, wb, bodies, 2);
+  }
+
+  template <int N, class Kernel>
+  void single_jacobian(int a, Kernel& kernel) {
+    using AD = AutoDiff<N>;
+    const BodyKin<AD> A = seeded<N>(a, 0, 1);
+    Wrench<AD> wa;
+    out_.potential_energy += value_of(kernel(A, wa));
+    const int bodies[1] = {a};
+    scatter<N>(a, wa, bodies, 1);
+  }
+
+  // Slot s of n bodies: pose variables at 6s..6s+5, velocities (when N = 12 n) at
+  // 6n+6s..6n+6s+5; with N = 6 n the velocities are plain constants.
   template <int N>
   BodyKin<AutoDiff<N>> seeded(int i, int slot, int n) const {
     using AD = AutoDiff<N>;
@@ -91,8 +116,9 @@ class Assembler {
       const int iv = 6 * n + 6 * slot + r, iw = 6 * n + 6 * slot + 3 + r;
       k.p_W[r] = free ? AD(state_.p_W[i][r], N, ip) : AD(state_.p_W[i][r], D::Zero());
       dphi[r] = free ? AD(0.0, N, ir) : AD(0.0, D::Zero());
-      k.v_W[r] = free ? AD(state_.v_W[i][r], N, iv) : AD(state_.v_W[i][r], D::Zero());
-      k.w_W[r] = free ? AD(state_.w_W[i][r], N, iw) : AD(state_.w_W[i][r], D::Zero());
+      const bool seed_v = free && N == 12 * n;
+      k.v_W[r] = seed_v ? AD(state_.v_W[i][r], N, iv) : AD(state_.v_W[i][r], D::Zero());
+      k.w_W[r] = seed_v ? AD(state_.w_W[i][r], N, iw) : AD(state_.w_W[i][r], D::Zero());
     }
     // First order in dphi is all a Jacobian needs: R = (I + [dphi]x) R0.
     const Mat3T<AD> R0 = state_.R_WB[i].cast<AD>();
@@ -116,9 +142,14 @@ class Assembler {
       for (int r = 0; r < 6; ++r) {
         const auto& d = r < 3 ? w.f_W[r].derivatives() : w.tau_W[r - 3].derivatives();
         for (int c = 0; c < 6; ++c) {
-          const double q = d[6 * s + c], v = d[6 * n + 6 * s + c];
+          const double q = d[6 * s + c];
           if (q != 0.0) dq_triplets.emplace_back(row0 + r, col0 + c, q);
-          if (v != 0.0) dv_triplets.emplace_back(row0 + r, col0 + c, v);
+          if constexpr (N == 12 * 2 || N == 12) {
+            if (N == 12 * n) {
+              const double v = d[6 * n + 6 * s + c];
+              if (v != 0.0) dv_triplets.emplace_back(row0 + r, col0 + c, v);
+            }
+          }
         }
       }
     }
@@ -128,6 +159,7 @@ class Assembler {
   const State& state_;
   BodyForces& out_;
   bool want_jacobian_;
+  bool want_velocity_;
 };
 
 }  // namespace finseg

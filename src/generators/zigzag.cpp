@@ -21,6 +21,24 @@ double panel_length(const ZigzagSpec& s) {
 
 }  // namespace
 
+ContactDef zigzag_contact_defaults() {
+  ContactDef c;
+  c.enabled = true;
+  c.stiffness = 3.0e7;  // N/m^1.5: 1 N at 10 um, a tenth of the paper's thickness
+  c.exponent = 1.5;
+  c.damping_law = ContactDamping::Impact;
+  c.damping = 4.4;  // N s/m: critical for a 32 mg segment on k_lin = 1.5e5 N/m
+  c.damping_depth = 1e-5;
+  c.friction = FrictionModel::Anchor;  // the static solver has no velocities
+  c.mu_static = 0.5;
+  c.mu_dynamic = 0.4;
+  c.stiction_speed = 1e-4;
+  c.friction_speed = 1e-3;
+  c.tangential_stiffness = 1.5e5;
+  c.tangential_damping = 4.4;
+  return c;
+}
+
 void validate(const ZigzagSpec& s, const std::string& src) {
   auto positive = [&](double v, const char* field, const char* unit) {
     if (!(v > 0) || !std::isfinite(v)) {
@@ -132,6 +150,7 @@ SheetSpec zigzag_sheet(const ZigzagSpec& s) {
 Model build_zigzag_model(const ZigzagSpec& s) {
   Model m = build_sheet_model(zigzag_sheet(s));
   if (s.gravity) m.gravity_W = Vec3(0, 0, -9.81);
+  m.contact = s.contact_settings;
   m.contact.enabled = s.contact;
   const double s_crease = s.pulled_crease * panel_length(s);
   const MaterialPoint at = locate_material_point(m, s_crease, 0.5 * s.width);

@@ -14,6 +14,10 @@ namespace finseg {
 
 class CreaseLaw;
 
+/// Contact settings of the paper strip (docs/zigzag.md, "Contact"): IMPACT normal law
+/// (docs/contact.md's 80 g/m^2 paper values) and elastic-anchor friction for the static pull.
+ContactDef zigzag_contact_defaults();
+
 /// Parameters of the zigzag strip and its pull test. SI units; angles in rad.
 struct ZigzagSpec {
   double length = 0.480, width = 0.040, thickness = 1.0e-4;  ///< m (paper: 480 x 40 mm)
@@ -37,7 +41,8 @@ struct ZigzagSpec {
   std::vector<std::shared_ptr<const CreaseLaw>> crease_laws;
   StiffnessOverride overrides;  ///< e.g. the taped (stiffened) panels' bending rigidity
   bool gravity = true;
-  bool contact = true;
+  bool contact = true;                                      ///< contact between panels on/off
+  ContactDef contact_settings = zigzag_contact_defaults();  ///< used when `contact`
   double damping_time = 0;
 };
 

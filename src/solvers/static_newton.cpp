@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision/contact_forces.hpp"
 #include "core/error.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
@@ -41,6 +42,7 @@ double residual_norm(const Model& model, const BodyForces& f) {
 bool solve_equilibrium(const Model& model, State& state, const SolverSettings& settings,
                        double fscale, BodyForces& f, SolverStats& stats) {
   ForceJacobian jac;
+  jac.with_velocity = false;  // statics needs d(force)/d(pose) only
   const double L = std::max(model.sheet.length, 1e-3);
   for (int it = 0; it < settings.max_iterations; ++it) {
     compute_forces(model, state, f, &jac);
@@ -101,6 +103,14 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
   return false;
 }
 
+// A Newton step may carry a plate through another before their contact switches on; the
+// equilibrium found then holds them interpenetrating. Plates overlapping by more than half the
+// sheet's thickness are taken as such and the increment is cut.
+bool tunnelled(const Model& model, const State& state) {
+  if (!model.contact.enabled) return false;
+  return contact_summary(model, state).max_penetration > 0.5 * model.sheet.thickness;
+}
+
 // Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
 template <class Setter>
 void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
@@ -113,7 +123,7 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
     const double x_try = (b > a) ? std::min(b, x + dx) : std::max(b, x + dx);
     const State start = state;
     set(state, x_try);
-    if (solve_equilibrium(model, state, settings, fscale, f, stats)) {
+    if (solve_equilibrium(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
       x = x_try;
       dx *= 1.5;
       if ((b > a ? dx > (b - a) : dx < (b - a))) dx = b - a;

@@ -1,0 +1,40 @@
+// A quasi-static pull test run to its end with what the zigzag examples, tests and
+// benchmarks record at each equilibrium: gauge force, contact, panel bending, phases.
+#pragma once
+
+#include <vector>
+
+#include "model/model.hpp"
+#include "probes/deployment_phases.hpp"
+#include "solvers/solver.hpp"
+
+namespace finseg {
+
+/// One recorded equilibrium of a pull test.
+struct PullSample {
+  double displacement = 0;  ///< drive 0's displacement (the slide), m
+  double force = 0;         ///< gauge force along the pull direction, N
+  int active_contacts = 0;
+  double max_penetration = 0;  ///< m
+  double bend = 0;             ///< largest panel_bend_angle of the watched panels, rad
+  bool finite = true;          ///< every pose and force finite
+};
+
+/// The whole pull: samples, solver counters, phases and the peak force.
+struct PullResult {
+  std::vector<PullSample> samples;
+  SolverStats stats;
+  DeploymentPhases phases;
+  double peak_force = 0;         ///< N
+  double peak_displacement = 0;  ///< m, where the peak occurs
+  double max_penetration = 0;    ///< over the whole pull, m
+  bool all_finite = true;
+};
+
+/// Runs the static solver along drive 0 of `model` (which must have one) and records every
+/// equilibrium. `watched_panels` (0-based) are the panels whose bending marks phase 3;
+/// `bend_threshold` in rad (detect_phases).
+PullResult run_pull_test(const Model& model, const std::vector<int>& watched_panels,
+                         double bend_threshold, const SolverSettings& settings = {});
+
+}  // namespace finseg

@@ -1,0 +1,64 @@
+// The paper's Table 1 conditions: material data (laminate bending rigidity from the
+// parallel-axis theorem) and the pull with contact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "generators/zigzag_conditions.hpp"
+#include "probes/pull_test.hpp"
+
+namespace finseg {
+namespace {
+
+TEST(ZigzagConditions, LaminateRigidityMatchesHandFormulas) {
+  const double w = 0.04, E = 4e9, t = 1e-4;
+  // One layer: E w t^3 / 12.
+  EXPECT_NEAR(laminate_bending_rigidity({{t, E, 800}}, w), E * w * t * t * t / 12, 1e-18);
+  // Two equal layers bonded: one layer twice as thick.
+  EXPECT_NEAR(laminate_bending_rigidity({{t, E, 800}, {t, E, 800}}, w), E * w * 8 * t * t * t / 12,
+              1e-17);
+  // Two identical stiff skins around a stress-free core (a sandwich): skins of thickness s at
+  // distance d between their mid-planes: 2 E w (s^3/12 + s (d/2)^2).
+  const double s = 5e-5, core = 2e-5, d = s + core;
+  EXPECT_NEAR(laminate_bending_rigidity({{s, E, 0}, {core, 0, 0}, {s, E, 0}}, w),
+              2 * E * w * (s * s * s / 12 + s * d * d / 4), 1e-18);
+  EXPECT_NEAR(laminate_areal_mass(taped_paper_layers()), 0.08 + 2e-5 * 1050 + 5e-5 * 905, 1e-12);
+}
+
+TEST(ZigzagConditions, TableOneAnglesAndStiffness) {
+  for (int n = 1; n <= 4; ++n) {
+    const ZigzagSpec s = paper_condition(n);
+    EXPECT_NEAR(s.fold_angle / kDegToRad, n <= 2 ? 80.0 : 83.0, 1e-12);
+    EXPECT_EQ(s.overrides.bending_rigidity.has_value(), n % 2 == 0);
+    EXPECT_TRUE(s.contact);
+    EXPECT_GT(s.contact_settings.stiffness, 0);
+  }
+  const double plain = 4e9 * 0.04 * 1e-12 / 12;
+  const double ratio = *paper_condition(2).overrides.bending_rigidity / plain;
+  EXPECT_GT(ratio, 2.0);
+  EXPECT_LT(ratio, 4.0);
+  EXPECT_THROW(paper_condition(0), InputError);
+  EXPECT_THROW(paper_condition(5), InputError);
+}
+
+// The target of the folded-strip examples. Known failure (docs/zigzag.md, "Status"): at about
+// 6-8 mm of pull the bottoms of the valley creases 2 and 4 meet edge to edge at the symmetry
+// plane; the contact force of that edge-on-edge touch is not smooth enough for the static
+// Newton solver, which stops there. Disabled until the contact or the solver handles it.
+TEST(ZigzagConditions, DISABLED_AllFourConditionsDeployWithContact) {
+  for (int n = 1; n <= 4; ++n) {
+    const ZigzagSpec spec = paper_condition(n);
+    const Model m = build_zigzag_model(spec);
+    const PullResult r = run_pull_test(m, {1, 4}, 0.1);
+    ASSERT_EQ(r.stats.status, "ok") << "condition " << n << ": " << r.stats.message;
+    EXPECT_TRUE(r.all_finite);
+    EXPECT_NEAR(r.samples.back().displacement, m.drives[0].travel, 1e-12);
+    EXPECT_LT(r.max_penetration, spec.contact_settings.damping_depth);
+    EXPECT_LE(r.phases.initial_deformation, r.phases.contact);
+    EXPECT_LE(r.phases.contact, r.phases.bending);
+  }
+}
+
+}  // namespace
+}  // namespace finseg
