@@ -8,6 +8,7 @@
 #include <string>
 
 #include "generators/cantilever.hpp"
+#include "solvers/dofs.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg::validation {
@@ -35,6 +36,14 @@ inline Vec3 probe_position(const Model& model, const State& state, const std::st
   }
   ADD_FAILURE() << "no point probe named " << name;
   return Vec3::Constant(NAN);
+}
+
+/// Largest speed of any body, m/s: centroid speeds and angular speeds times `length`.
+inline double largest_speed(const State& state, double length) {
+  double v = 0;
+  for (const Vec3& x : state.v_W) v = std::max(v, x.norm());
+  for (const Vec3& w : state.w_W) v = std::max(v, w.norm() * length);
+  return v;
 }
 
 /// Static equilibrium of `model` under its full loads, from the flat initial state.
