@@ -38,6 +38,28 @@ double residual_norm(const Model& model, const BodyForces& f) {
   return r;
 }
 
+// Largest translation (relative to the length scale L) or rotation (rad) in a correction.
+double newton_step_size(const Eigen::VectorXd& dq, double L) {
+  double step = 0;
+  for (int i = 0; i + 5 < dq.size(); i += 6) {
+    step = std::max({step, dq.segment<3>(i).lpNorm<Eigen::Infinity>() / L,
+                     dq.segment<3>(i + 3).lpNorm<Eigen::Infinity>()});
+  }
+  return step;
+}
+
+// Work of the dead load moments over the pose increment dq (exact: each body turns about
+// the fixed world axis of its rotation increment).
+double dead_moment_work(const Model& model, const State& state, const Eigen::VectorXd& dq) {
+  double w = 0;
+  for (const LoadDef& l : model.loads) {
+    const int d = model.dof_of_body[l.body];
+    if (l.follower || d < 0) continue;
+    w += state.load_scale * l.moment.dot(dq.segment<3>(d + 3));
+  }
+  return w;
+}
+
 // Newton from the current state at the current load scale and drive positions.
 bool solve_equilibrium(const Model& model, State& state, const SolverSettings& settings,
                        double fscale, BodyForces& f, SolverStats& stats) {
@@ -61,6 +83,16 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
           "restrained (add a fixture) or has a mechanism; most strained {}",
           state.t, most_strained_element(model, state)));
     }
+    // A Newton correction this small leaves an error of its square: converged, even where
+    // round-off in the stiff in-plane springs keeps the residual above the force tolerance.
+    // Tested before the line search, which cannot make progress at round-off level (and
+    // whose energy test is blind to dead moments, which have no potential).
+    if (newton_step_size(dq, L) < settings.tolerance) {
+      apply_pose_increment(model, state, dq);
+      compute_forces(model, state, f);
+      ++stats.force_evaluations;
+      return true;
+    }
     // Limit the step so that no rotation jumps by more than 1 rad in one iteration.
     double alpha = 1.0;
     for (int i = 0; i + 5 < dq.size(); i += 6) {
@@ -68,7 +100,10 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     }
     // Backtracking: accept a sufficient decrease of the potential energy (the natural merit
     // for conservative structures) or of the residual (follower loads, indefinite K).
+    // Dead moments have no potential, but along this line each body turns about a fixed
+    // axis, so their work is exactly linear in alpha and joins the merit.
     const double slope = -g.dot(dq);  // dU/dalpha at alpha = 0
+    const double moment_power = dead_moment_work(model, state, dq);
     const State base = state;
     const double u0 = f.potential_energy;
     BodyForces trial;
@@ -80,7 +115,8 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
       ++stats.force_evaluations;
       const double r = residual_norm(model, trial);
       if (r < best_r) best_r = r, best_alpha = alpha;
-      const bool energy_ok = slope < 0 && trial.potential_energy <= u0 + 1e-4 * alpha * slope;
+      const double u = trial.potential_energy - alpha * moment_power;
+      const bool energy_ok = slope < 0 && u <= u0 + 1e-4 * alpha * slope;
       if (energy_ok || r <= (1 - 1e-4 * alpha) * r0) {
         best_alpha = alpha;
         break;
@@ -88,17 +124,6 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     }
     state = base;
     apply_pose_increment(model, state, best_alpha * dq);
-    // A full Newton step this small leaves an error of its square: converged, even where
-    // round-off in the stiff in-plane springs keeps the residual above the force tolerance.
-    double step = 0;
-    for (int i = 0; i + 5 < dq.size(); i += 6) {
-      step = std::max({step, dq.segment<3>(i).lpNorm<Eigen::Infinity>() / L,
-                       dq.segment<3>(i + 3).lpNorm<Eigen::Infinity>()});
-    }
-    if (best_alpha == 1.0 && step < settings.tolerance) {
-      compute_forces(model, state, f);
-      return true;
-    }
   }
   return false;
 }
