@@ -10,26 +10,12 @@
 
 #include "core/cubic_spline.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/plot.hpp"
 
 namespace finseg {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() &&
@@ -64,21 +50,6 @@ Column find_column(const std::vector<std::string>& header, const std::string& wa
   throw InputError(path, "header", fmt::format("no {} among the columns [{}]", need, names));
 }
 
-double parse_number(const std::string& cell, const std::string& path, int line,
-                    const std::string& column) {
-  const std::string field = fmt::format("line {}, column {}", line, column);
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(cell, &used);
-  } catch (const std::exception&) {
-    throw InputError(path, field, fmt::format("'{}' is not a number", cell));
-  }
-  if (used != cell.size()) throw InputError(path, field, fmt::format("'{}' is not a number", cell));
-  if (!std::isfinite(v)) throw InputError(path, field, "must be finite");
-  return v;
-}
-
 std::vector<double> resample(const ForceCurve& c, const std::vector<double>& x) {
   const CubicSpline s(c.x, c.force, SplineEnds::NotAKnot);
   std::vector<double> y;
@@ -111,7 +82,7 @@ ForceCurve read_force_curve(const std::string& path, const std::string& x_column
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     if (trim(line).empty()) continue;
-    const std::vector<std::string> cells = split(line);
+    const std::vector<std::string> cells = split_csv_line(line);
     if (!have_header) {
       cx = find_column(cells, x_column, {{"_mm", 1e-3}, {"_m", 1.0}}, path,
                        "displacement (name ending in _mm or _m)");
@@ -127,8 +98,10 @@ ForceCurve read_force_curve(const std::string& path, const std::string& x_column
       throw InputError(path, fmt::format("line {}", number),
                        fmt::format("{} values, the header has {} columns", cells.size(), ncols));
     }
-    const double x = cx.factor * parse_number(cells[cx.index], path, number, c.x_column);
-    const double f = cy.factor * parse_number(cells[cy.index], path, number, c.y_column);
+    const double x = cx.factor * parse_number(cells[cx.index], path,
+                                              fmt::format("line {}: {}", number, c.x_column));
+    const double f = cy.factor * parse_number(cells[cy.index], path,
+                                              fmt::format("line {}: {}", number, c.y_column));
     if (!c.x.empty() && !(x > c.x.back())) {
       throw InputError(path, fmt::format("line {}, column {}", number, c.x_column),
                        "displacement must increase strictly from row to row");

@@ -6,20 +6,16 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace finseg {
 
 void validate(const CantileverSpec& s, const std::string& src) {
-  auto positive = [&](double v, const char* field, const char* unit) {
-    if (!(v > 0) || !std::isfinite(v)) {
-      throw InputError(src, field, fmt::format("{} {}; must be finite and > 0", v, unit));
-    }
-  };
-  positive(s.length, "length", "m");
-  positive(s.width, "width", "m");
-  positive(s.thickness, "thickness", "m");
-  positive(s.youngs_modulus, "modulus", "Pa");
-  positive(s.density, "density", "kg/m^3");
+  require_positive(s.length, src, "length", "m");
+  require_positive(s.width, src, "width", "m");
+  require_positive(s.thickness, src, "thickness", "m");
+  require_positive(s.youngs_modulus, src, "modulus", "Pa");
+  require_positive(s.density, src, "density", "kg/m^3");
   if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5)) {
     throw InputError(src, "poisson", fmt::format("{}; allowed range [0, 0.5)", s.poisson_ratio));
   }

@@ -10,25 +10,20 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "core/text.hpp"
 
 namespace finseg {
 namespace {
 
 constexpr double kShearCorrection = 5.0 / 6.0;
 
-void check_positive(double v, const char* field, const char* unit) {
-  if (!(v > 0) || !std::isfinite(v)) {
-    throw InputError("<api>", field, fmt::format("{} {}; must be finite and > 0", v, unit));
-  }
-}
-
 void validate_spec(const SheetSpec& s) {
-  check_positive(s.length, "sheet.length", "m");
-  check_positive(s.width, "sheet.width", "m");
-  check_positive(s.thickness, "sheet.thickness", "m");
-  check_positive(s.youngs_modulus, "material.youngs_modulus", "Pa");
-  check_positive(s.density, "material.density", "kg/m^3");
-  check_positive(s.crease_refinement, "discretisation.crease_refinement", "(ratio)");
+  require_positive(s.length, "<api>", "sheet.length", "m");
+  require_positive(s.width, "<api>", "sheet.width", "m");
+  require_positive(s.thickness, "<api>", "sheet.thickness", "m");
+  require_positive(s.youngs_modulus, "<api>", "material.youngs_modulus", "Pa");
+  require_positive(s.density, "<api>", "material.density", "kg/m^3");
+  require_positive(s.crease_refinement, "<api>", "discretisation.crease_refinement", "(ratio)");
   if (!(s.poisson_ratio >= 0 && s.poisson_ratio < 0.5)) {
     throw InputError("<api>", "material.poisson_ratio",
                      fmt::format("{}; allowed range [0, 0.5)", s.poisson_ratio));
@@ -44,7 +39,7 @@ void validate_spec(const SheetSpec& s) {
       throw InputError("<api>", "discretisation.cell_weights",
                        "needs one weight per segment along the length");
     }
-    for (double w : s.cell_weights) check_positive(w, "discretisation.cell_weights", "");
+    for (double w : s.cell_weights) require_positive(w, "<api>", "discretisation.cell_weights", "");
   }
   double prev = 0;
   for (size_t i = 0; i < s.folds.size(); ++i) {

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "core/text.hpp"
 #include "elements/crease_law.hpp"
 
 namespace finseg {
@@ -40,16 +41,11 @@ ContactDef zigzag_contact_defaults() {
 }
 
 void validate(const ZigzagSpec& s, const std::string& src) {
-  auto positive = [&](double v, const char* field, const char* unit) {
-    if (!(v > 0) || !std::isfinite(v)) {
-      throw InputError(src, field, fmt::format("{} {}; must be finite and > 0", v, unit));
-    }
-  };
-  positive(s.length, "length", "m");
-  positive(s.width, "width", "m");
-  positive(s.thickness, "thickness", "m");
-  positive(s.pull_step, "pull_step", "m");
-  positive(s.gauge_stiffness, "gauge_stiffness", "N/m");
+  require_positive(s.length, src, "length", "m");
+  require_positive(s.width, src, "width", "m");
+  require_positive(s.thickness, src, "thickness", "m");
+  require_positive(s.pull_step, src, "pull_step", "m");
+  require_positive(s.gauge_stiffness, src, "gauge_stiffness", "N/m");
   if (s.panels < 2) throw InputError(src, "panels", fmt::format("{}; must be >= 2", s.panels));
   if (!(s.fold_angle > 0 && s.fold_angle < kPi / 2)) {
     throw InputError(

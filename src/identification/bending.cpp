@@ -9,33 +9,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace finseg {
-
-namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-double to_number(const std::string& text, const std::string& file, const std::string& field) {
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) {
-    throw InputError(file, field, fmt::format("'{}' is not a number", text));
-  }
-  if (!std::isfinite(v)) throw InputError(file, field, "must be finite (NaN/inf given)");
-  return v;
-}
-
-}  // namespace
 
 CantileverData parse_cantilever_data(std::istream& in, const std::string& file) {
   CantileverData d;
@@ -59,7 +35,7 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
                                     : key == "thickness_m" ? &d.thickness
                                                            : nullptr;
       if (slot) {
-        const double v = to_number(value, file, fmt::format("line {}: {}", line, key));
+        const double v = parse_number(value, file, fmt::format("line {}: {}", line, key));
         if (!(v > 0)) {
           throw InputError(file, fmt::format("line {}: {}", line, key),
                            fmt::format("{} must be > 0 m", v));
@@ -68,10 +44,7 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
       }
       continue;
     }
-    std::vector<std::string> cells;
-    std::stringstream ss(t);
-    std::string c;
-    while (std::getline(ss, c, ',')) cells.push_back(trim(c));
+    const std::vector<std::string> cells = split_csv_line(t);
     if (header.empty()) {
       header = cells;
       for (size_t i = 0; i < cells.size(); ++i) {
@@ -99,10 +72,10 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
           file, fmt::format("line {}", line),
           fmt::format("has {} values, the header has {} columns", cells.size(), header.size()));
     }
-    const double F =
-        to_number(cells[static_cast<size_t>(col_f)], file, fmt::format("line {}: force_N", line));
-    const double x = x_scale * to_number(cells[static_cast<size_t>(col_x)], file,
-                                         fmt::format("line {}: {}", line, header[col_x]));
+    const double F = parse_number(cells[static_cast<size_t>(col_f)], file,
+                                  fmt::format("line {}: force_N", line));
+    const double x = x_scale * parse_number(cells[static_cast<size_t>(col_x)], file,
+                                            fmt::format("line {}: {}", line, header[col_x]));
     if (F < 0 || x < 0) {
       throw InputError(file, fmt::format("line {}", line),
                        "force and displacement must be >= 0 (measured along the load)");

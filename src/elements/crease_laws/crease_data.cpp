@@ -10,6 +10,7 @@
 
 #include "core/cubic_spline.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace finseg {
 
@@ -18,37 +19,6 @@ namespace {
 const char* kAllowedColumns =
     "angle_deg, moment_Nm | force_N (+ lever_m), pressing_time_s, "
     "opening, repeat";
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
-double parse_number(const std::string& text, const std::string& file, int line,
-                    const std::string& column) {
-  const std::string field = fmt::format("line {}: {}", line, column);
-  size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    throw InputError(file, field, fmt::format("'{}' is not a number", text));
-  }
-  if (used != text.size()) throw InputError(file, field, fmt::format("'{}' is not a number", text));
-  if (!std::isfinite(v)) throw InputError(file, field, "must be a finite number (NaN/inf given)");
-  return v;
-}
 
 struct Row {
   int line;
@@ -146,7 +116,7 @@ CreaseData parse_crease_data(std::istream& in, const std::string& file,
     ++line_no;
     const std::string t = trim(raw);
     if (t.empty() || t[0] == '#') continue;
-    header = split(t);
+    header = split_csv_line(t);
     header_line = line_no;
   }
   if (header.empty()) {
@@ -191,14 +161,15 @@ CreaseData parse_crease_data(std::istream& in, const std::string& file,
     ++line_no;
     const std::string t = trim(raw);
     if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> cells = split(t);
+    const std::vector<std::string> cells = split_csv_line(t);
     if (cells.size() != header.size()) {
       throw InputError(
           file, fmt::format("line {}", line_no),
           fmt::format("has {} values, the header has {} columns", cells.size(), header.size()));
     }
     auto get = [&](const char* name) {
-      return parse_number(cells[static_cast<size_t>(col.at(name))], file, line_no, name);
+      return parse_number(cells[static_cast<size_t>(col.at(name))], file,
+                          fmt::format("line {}: {}", line_no, name));
     };
     auto get_index = [&](const char* name) {
       const double v = get(name);
