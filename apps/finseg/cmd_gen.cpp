@@ -148,6 +148,8 @@ void register_zigzag(CLI::App* gen) {
   c->add_option("--gauge-stiffness", s.gauge_stiffness, "N/m");
   c->add_option("--crease-law", o->z.crease_law_file, "measured crease data file for all creases")
       ->check(CLI::ExistingFile);
+  c->add_option("--pressing-time", o->z.pressing_time,
+                "s: pressing time of the --crease-law curves to use (interpolated)");
   c->add_option("--crease-stiffness", o->z.crease_stiffness,
                 "linear crease stiffness, N m/rad (resting at the fold)");
   c->add_option("--bending-rigidity", o->bending_rigidity, "EI of the whole width, N m^2");
@@ -164,6 +166,9 @@ void register_zigzag(CLI::App* gen) {
     if (!o->z.crease_law_file.empty() && o->z.crease_stiffness) {
       throw InputError("<cli>", "--crease-law",
                        "give --crease-law or --crease-stiffness, not both");
+    }
+    if (o->z.pressing_time && o->z.crease_law_file.empty()) {
+      throw InputError("<cli>", "--pressing-time", "needs --crease-law");
     }
     if (!o->z.crease_law_file.empty()) {
       o->z.crease_law_file = relative_to_scene(o->z.crease_law_file, o->out);

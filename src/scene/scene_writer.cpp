@@ -126,7 +126,10 @@ std::string zigzag_scene(const ZigzagSceneOptions& o, const SolverSettings& solv
       s.panels, num(o.fold_angle_deg));
   if (!s.pattern.empty()) y += fmt::format("  pattern: {}   # P peak, V valley\n", s.pattern);
   if (!o.crease_law_file.empty()) {
-    y += fmt::format("  crease_law: {{type: measured, file: {}}}\n", yaml_quote(o.crease_law_file));
+    const std::string pressing =
+        o.pressing_time ? fmt::format(", pressing_time: {}", num(*o.pressing_time)) : "";
+    y += fmt::format("  crease_law: {{type: measured, file: {}{}}}   # pressing_time in s\n",
+                     yaml_quote(o.crease_law_file), pressing);
   } else if (o.crease_stiffness) {
     y += "  crease_laws:   # linear, resting at the initial fold (N m/rad, signed deg)\n";
     for (int k = 0; k + 1 < s.panels; ++k) {

@@ -18,9 +18,10 @@ std::string cantilever_scene(const CantileverSpec& spec, const SolverSettings& s
 
 /// What `finseg gen zigzag` knows beyond ZigzagSpec (whose crease_laws it ignores).
 struct ZigzagSceneOptions {
-  ZigzagSpec spec;              ///< fold_angle is taken from fold_angle_deg below
-  double fold_angle_deg = 80;   ///< deg, written as given
-  std::string crease_law_file;  ///< measured crease data for every crease (empty: default)
+  ZigzagSpec spec;                      ///< fold_angle is taken from fold_angle_deg below
+  double fold_angle_deg = 80;           ///< deg, written as given
+  std::string crease_law_file;          ///< measured crease data for every crease (empty: default)
+  std::optional<double> pressing_time;  ///< s: which measured pressing time (interpolated)
   std::optional<double> crease_stiffness;  ///< N m/rad: linear crease resting at the fold
 };
 
