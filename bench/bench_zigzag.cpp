@@ -18,7 +18,7 @@ void BM_ZigzagPull(benchmark::State& bs) {
   const Model m = build_zigzag_model(spec);
   PullResult r;
   for (auto _ : bs) {
-    r = run_pull_test(m, {1, 4}, 0.1);
+    r = run_pull_test(m, {1, 4}, kDefaultBendThreshold);
     benchmark::DoNotOptimize(r.peak_force);
   }
   bs.counters["equilibria"] = static_cast<double>(r.stats.steps);

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
       if (argc > 3) spec.crease_refinement = std::atof(argv[3]);
       if (argc > 4) spec.contact = std::atoi(argv[4]) != 0;
       const Model m = build_zigzag_model(spec);
-      const PullResult r = run_pull_test(m, {1, 4}, 0.1);
+      const PullResult r = run_pull_test(m, {1, 4}, kDefaultBendThreshold);
       fmt::print(
           "{:>9} {:>14} {:>8} {:>10} {:>9} {:>11.3f} {:>12.4f} {:>10.1f} {:>10.1f} {:>10.1f} {}\n",
           c, paper_condition_label(c), n, r.stats.steps, r.stats.newton_iterations,

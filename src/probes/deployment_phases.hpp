@@ -28,6 +28,9 @@ struct DeploymentPhases {
   double bending = 0;
 };
 
+/// Default bend of a watched panel that marks the bending phase: 0.1 rad (5.7 deg), rad.
+constexpr double kDefaultBendThreshold = 0.1;
+
 /// Rule: contact begins at the first sample with an active contact; bending begins at the
 /// first later sample whose watched-panel bend exceeds `bend_threshold` (rad).
 DeploymentPhases detect_phases(const std::vector<PhaseSample>& samples, double bend_threshold);

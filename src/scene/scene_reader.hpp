@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "probes/deployment_phases.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -13,8 +14,8 @@ namespace finseg {
 /// Deployment-phase detection of a pull test (probes/deployment_phases.hpp).
 struct PhaseSettings {
   bool enabled = false;
-  std::vector<int> panels{2, 5};          ///< watched panels, 1-based
-  double bend_threshold = 5 * kDegToRad;  ///< rad (scene key bend_threshold_deg)
+  std::vector<int> panels{2, 5};                  ///< watched panels, 1-based
+  double bend_threshold = kDefaultBendThreshold;  ///< rad (scene key bend_threshold_deg)
 };
 
 /// What `finseg run` writes besides the probe CSVs and summary.json (scene `outputs:`).
