@@ -1,5 +1,6 @@
 #include "probes/deployment_phases.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -41,6 +42,12 @@ DeploymentPhases detect_phases(const std::vector<PhaseSample>& samples, double b
     }
   }
   return p;
+}
+
+double watched_bend(const Model& model, const State& state, const std::vector<int>& panels) {
+  double bend = 0;
+  for (int p : panels) bend = std::max(bend, panel_bend_angle(model, state, p));
+  return bend;
 }
 
 }  // namespace finseg

@@ -14,6 +14,9 @@ namespace finseg {
 /// over its bending joints (creases excluded), rad.
 double panel_bend_angle(const Model& model, const State& state, int panel);
 
+/// Largest panel_bend_angle over the watched panels (0-based), rad.
+double watched_bend(const Model& model, const State& state, const std::vector<int>& panels);
+
 /// What the phase detector needs at each recorded equilibrium.
 struct PhaseSample {
   double displacement = 0;  ///< pull displacement, m

@@ -27,7 +27,7 @@ PullSample sample(const Model& m, const State& s, const BodyForces& f,
   const ContactSummary c = contact_summary(m, s);
   p.active_contacts = c.active;
   p.max_penetration = c.max_penetration;
-  for (int panel : watched) p.bend = std::max(p.bend, panel_bend_angle(m, s, panel));
+  p.bend = watched_bend(m, s, watched);
   p.finite = finite_state(s, f) && std::isfinite(p.force);
   return p;
 }

@@ -113,9 +113,8 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
   }
   if (options_.frames) frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W});
   if (options_.phases && !model_.drives.empty()) {
-    double bend = 0;
-    for (int p : options_.watched_panels) bend = std::max(bend, panel_bend_angle(model_, state, p));
-    samples_.push_back({state.drive_s[0], contact.active, bend});
+    samples_.push_back(
+        {state.drive_s[0], contact.active, watched_bend(model_, state, options_.watched_panels)});
   }
 }
 
