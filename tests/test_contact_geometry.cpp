@@ -413,3 +413,47 @@ TEST(ContactRules, GeneratedZigzagHasNoFalseContact) {
 
 }  // namespace
 }  // namespace finseg
+
+namespace finseg {
+namespace {
+
+// A plate tilted by 45 deg whose lowest edge hangs a height h above the middle of a flat
+// plate: the narrow phase counts it in contact where h < r_a + r_b (depth r_a + r_b - h), so
+// the broad phase must pair the two although their thickness boxes do not overlap for h above
+// r + r cos 45 deg (the corner would otherwise enter the contact already that deep).
+TEST(ContactBroadphase, TiltedCornerEntersTheContactWithZeroDepth) {
+  const double L = 0.01, t = 1e-4, reach = t;
+  const Mat3 R = Eigen::AngleAxisd(kPi / 4, Vec3::UnitY()).toRotationMatrix();
+  Model m;
+  for (int i = 0; i < 2; ++i) {
+    BodyDef b;
+    b.name = fmt::format("p{}", i);
+    b.mass = 1e-4;
+    b.size = Vec3(L, L, t);
+    b.J_B = Mat3::Identity() * 1e-9;
+    m.bodies.push_back(b);
+  }
+  m.contact.enabled = true;
+  m.contact.stiffness = 1e5;
+  m.contact.exponent = 1.5;
+  m.contact.damping_depth = 1e-5;
+  for (const double h : {0.95 * reach, 0.8 * reach, 1.05 * reach}) {
+    State s;
+    // Lowest edge of the tilted plate (its body x = +L/2 edge) at height h over the origin.
+    const Vec3 low_edge_B(0.5 * L, 0, 0);
+    s.p_W = {Vec3::Zero(), Vec3(0, 0, h) - R * low_edge_B};
+    s.R_WB = {Mat3::Identity(), R};
+    s.v_W.assign(2, Vec3::Zero());
+    s.w_W.assign(2, Vec3::Zero());
+    const ContactSummary c = contact_summary(m, s);
+    if (h < reach) {
+      ASSERT_GT(c.active, 0) << "h = " << h;
+      EXPECT_NEAR(c.max_penetration, reach - h, 1e-12) << "h = " << h;
+    } else {
+      EXPECT_EQ(c.active, 0) << "h = " << h;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace finseg

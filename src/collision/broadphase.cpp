@@ -7,8 +7,13 @@
 namespace finseg {
 
 Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const Vec3& size, double margin) {
-  // Extent of a box along world axis k: sum over body axes of |R(k, j)| * half size j.
-  const Vec3 ext = R_WB.cwiseAbs() * (0.5 * size) + Vec3::Constant(margin);
+  // Extent of the mid-surface rectangle along world axis k: sum over the in-plane body axes
+  // of |R(k, j)| * half size j; then the half thickness in every direction. The narrow phase
+  // takes two plates as touching where their mid-surfaces come closer than the sum of the
+  // half thicknesses (at any angle), so the box is the rectangle swept by a ball of radius
+  // r, not the plate's own box: a tilted corner would otherwise enter with a finite depth.
+  const Vec3 half_rect(0.5 * size.x(), 0.5 * size.y(), 0.0);
+  const Vec3 ext = R_WB.cwiseAbs() * half_rect + Vec3::Constant(0.5 * size.z() + margin);
   return {p_W - ext, p_W + ext};
 }
 

@@ -19,7 +19,8 @@ struct Aabb {
 };
 
 /// Box of a thin plate with edge lengths `size` (z = thickness), centroid p_W and
-/// orientation R_WB, grown by `margin`.
+/// orientation R_WB: its mid-surface rectangle grown by the half thickness in every
+/// direction (the reach of the narrow phase), then by `margin`.
 Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const Vec3& size, double margin);
 
 /// Finds all pairs (i < j) of overlapping boxes, sorted. Keeps its buffers between calls so

@@ -34,6 +34,7 @@ struct SolverStats {
   long newton_iterations = 0;
   long force_evaluations = 0;
   long jacobian_evaluations = 0;
+  long settles = 0;  ///< static: limit points passed by pseudo-transient continuation
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;
   std::string status = "ok";  ///< "ok" or "diverged"

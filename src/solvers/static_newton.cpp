@@ -136,6 +136,68 @@ bool tunnelled(const Model& model, const State& state) {
   return contact_summary(model, state).max_penetration > 0.5 * model.sheet.thickness;
 }
 
+// One pseudo-time step of the proximal iteration from the current poses q_n: solves
+//   M (q - q_n) / h^2 = F(q)
+// by Newton on the matrix M / h^2 - dF/dq. For small h the matrix is positive definite even
+// where the stiffness is not (past a limit point), so the step exists and moves downhill in
+// the energy. Returns true when the implicit equation is solved (the step is then accepted:
+// no merit test, which would sit at round-off level for small steps).
+bool proximal_step(const Model& model, State& state, const Eigen::SparseMatrix<double>& M, double h,
+                   const SolverSettings& settings, BodyForces& f, SolverStats& stats) {
+  ForceJacobian jac;
+  jac.with_velocity = false;
+  const double L = std::max(model.sheet.length, 1e-3);
+  const Eigen::SparseMatrix<double> M_h = M / (h * h);
+  Eigen::VectorXd moved = Eigen::VectorXd::Zero(model.num_dofs);
+  for (int it = 0; it < settings.max_iterations; ++it) {
+    compute_forces(model, state, f, &jac);
+    ++stats.force_evaluations;
+    ++stats.jacobian_evaluations;
+    ++stats.newton_iterations;
+    const Eigen::VectorXd res = generalized_forces(model, f) - M_h * moved;
+    Eigen::VectorXd dq;
+    if (!res.allFinite() || !sparse_solve(M_h - jac.dq, res, dq) || !dq.allFinite()) return false;
+    // A step that turns a body by more than 0.1 rad is outside the linearisation: shorter h.
+    if (newton_step_size(dq, L) > 0.1) return false;
+    apply_pose_increment(model, state, dq);
+    moved += dq;
+    if (newton_step_size(dq, L) < settings.tolerance) return true;
+  }
+  return false;
+}
+
+// Where the equilibrium path ends at a limit point (the strip snaps to another branch, as the
+// real one does under the slowly turned crank) or at a kink of the contact force, Newton
+// finds no nearby equilibrium. Pseudo-transient continuation then follows the mass-weighted
+// steepest descent by proximal steps with a pseudo time step h that grows on success, until
+// Newton converges from where it has arrived.
+bool settle(const Model& model, State& state, const SolverSettings& settings, double fscale,
+            BodyForces& f, SolverStats& stats) {
+  const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
+  constexpr double kFirstStep = 1e-4, kNewtonStep = 1.0, kSmallestStep = 1e-9;  // s
+  constexpr int kMaxSteps = 400;
+  double h = kFirstStep;
+  for (int k = 0; k < kMaxSteps; ++k) {
+    const State base = state;
+    if (h >= kNewtonStep) {
+      // Once the pseudo step is this long the mass term no longer matters: finish with Newton.
+      if (solve_equilibrium(model, state, settings, fscale, f, stats)) return true;
+      state = base;
+      h = 0.25 * kNewtonStep;
+      continue;
+    }
+    if (proximal_step(model, state, M, h, settings, f, stats)) {
+      if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
+      h *= 2;
+    } else {
+      state = base;
+      h *= 0.25;
+      if (h < kSmallestStep) return false;
+    }
+  }
+  return false;
+}
+
 // Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
 template <class Setter>
 void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
@@ -144,6 +206,7 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
   double x = a;
   double dx = (b - a) / std::max(1, initial_steps);
   const double dx_min = std::abs(b - a) * 1e-6;
+  constexpr double kJump = 1e-2;  // of the interval: how far past a limit point settle starts
   while ((b - x) * (b > a ? 1 : -1) > 1e-12 * std::abs(b - a)) {
     const double x_try = (b > a) ? std::min(b, x + dx) : std::max(b, x + dx);
     const State start = state;
@@ -158,6 +221,18 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
     ++stats.rejected_steps;
     dx *= 0.25;
     if (std::abs(dx) < dx_min) {
+      // The branch ends (or the force has a kink) just past x: step beyond it by a small but
+      // finite amount and let the strip settle onto the equilibrium it reaches there.
+      const double x_jump =
+          (b > a) ? std::min(b, x + kJump * (b - a)) : std::max(b, x + kJump * (b - a));
+      set(state, x_jump);
+      if (settle(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
+        ++stats.settles;
+        x = x_jump;
+        dx = kJump * (b - a);
+        continue;
+      }
+      state = start;
       throw DivergenceError(fmt::format(
           "static solver: no equilibrium found beyond {} = {:.6g} (increment below {:.3g}); "
           "most strained {}",

@@ -36,6 +36,7 @@ nlohmann::json stats_json(const SolverStats& s) {
           {"newton_iterations", s.newton_iterations},
           {"force_evaluations", s.force_evaluations},
           {"jacobian_evaluations", s.jacobian_evaluations},
+          {"settles", s.settles},
           {"smallest_step_s", s.smallest_step},
           {"largest_step_s", s.largest_step},
           {"solver_wall_s", s.wall_seconds}};
