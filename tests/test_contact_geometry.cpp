@@ -1,6 +1,6 @@
-// Contact geometry, laws and Jacobians, without a solver: clipping against hand-computed
-// polygons, the broad phase against brute force, the laws against their closed forms, the
-// autodiff Jacobian against central differences, and the pair rules.
+// Contact geometry, laws and Jacobians, without a solver: the rounded-plate distance against
+// hand-computed points, the broad phase against brute force, the laws against their closed forms,
+// the autodiff Jacobian against central differences, and the pair rules.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -26,83 +26,90 @@ Mat3 rot_z(double a) {
   return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
 }
 
-TEST(ContactClip, SmallPlateOnLargePlateGivesItsFourCorners) {
-  const PlateShape big{0.05, 0.05, 5e-5}, small{0.01, 0.02, 5e-5};
-  Manifold m;
-  ASSERT_TRUE(clip_plates(kin(Vec3::Zero()), big, kin(Vec3(0.003, 0.001, 9e-5)), small, -1, m));
-  EXPECT_TRUE(m.ref_is_a);  // the larger plate is the reference
-  ASSERT_EQ(m.count, 4);
-  std::array<VertexGeometry<double>, 8> g;
-  for (int k = 0; k < 4; ++k) {
-    EXPECT_EQ(m.poly[k].kind, VertexKind::Incident);
-    g[k] = vertex_geometry(kin(Vec3::Zero()), big, kin(Vec3(0.003, 0.001, 9e-5)), small, m.poly[k]);
-    EXPECT_NEAR(g[k].height, 9e-5, 1e-15);
-  }
-  std::array<double, 8> share;
-  ASSERT_TRUE(vertex_shares(g.data(), 4, 8e-4, 8e-4, share.data()));
-  for (int k = 0; k < 4; ++k) EXPECT_NEAR(share[k], 0.25, 1e-14);
+// Target plate turned about z and lifted: the point tests run in its frame.
+BodyKin<double> target() {
+  return kin(Vec3(0.01, -0.02, 0.003), rot_z(0.4));
+}
+Vec3 in_target(const Vec3& local) {
+  const BodyKin<double> t = target();
+  return t.p_W + t.R_WB * local;
 }
 
-TEST(ContactClip, SquareTurnedByFortyFiveDegreesGivesTheRegularOctagon) {
-  // Overlap of two equal squares of half size h, one turned by 45 deg: a regular octagon
-  // whose vertices lie on the square's edges at +-h (sqrt(2) - 1) from the edge centres.
-  const double h = 0.01;
-  const PlateShape s{h, h, 5e-5};
-  Manifold m;
-  const BodyKin<double> A = kin(Vec3::Zero()), B = kin(Vec3(0, 0, 8e-5), rot_z(kPi / 4));
-  ASSERT_TRUE(clip_plates(A, s, B, s, 0, m));
-  ASSERT_EQ(m.count, 8);
-  std::array<VertexGeometry<double>, 8> g;
-  for (int k = 0; k < 8; ++k) {
-    EXPECT_EQ(m.poly[k].kind, VertexKind::Crossing);
-    g[k] = vertex_geometry(A, s, B, s, m.poly[k]);
-    const double big = std::max(std::abs(g[k].u), std::abs(g[k].v));
-    const double other = std::min(std::abs(g[k].u), std::abs(g[k].v));
-    EXPECT_NEAR(big, h, 1e-15);
-    EXPECT_NEAR(other, h * (std::sqrt(2.0) - 1), 1e-15);
-  }
-  std::array<double, 8> share;
-  // Octagon of apothem h: area 8 h^2 tan(22.5 deg) = 8 h^2 (sqrt(2) - 1) of 4 h^2.
-  ASSERT_TRUE(vertex_shares(g.data(), 8, 4 * h * h, 4 * h * h, share.data()));
-  for (int k = 0; k < 8; ++k) EXPECT_NEAR(share[k], 2 * (std::sqrt(2.0) - 1) / 8, 1e-14);
+TEST(RoundedPlate, PointOverTheFaceTouchesAlongTheNormal) {
+  const PlateShape st{0.01, 0.005, 5e-5};
+  const double r_src = 4e-5, h = 6e-5;
+  const PointContact<double> c =
+      point_on_plate(target(), st, in_target({0.003, -0.004, h}), r_src, 1);
+  EXPECT_NEAR(c.depth, r_src + st.r - h, 1e-16);
+  EXPECT_NEAR((c.n_W - target().R_WB.col(2)).norm(), 0, 1e-14);
+  // Contact point: half way between the two surfaces (at heights st.r and h - r_src).
+  EXPECT_NEAR((c.x_W - in_target({0.003, -0.004, 0.5 * (st.r + h - r_src)})).norm(), 0, 1e-16);
+  // Sunk past the mid-plane on the remembered side: still pushed back up, deeper.
+  const PointContact<double> sunk =
+      point_on_plate(target(), st, in_target({0.003, -0.004, -1e-5}), r_src, 1);
+  EXPECT_NEAR(sunk.depth, r_src + st.r + 1e-5, 1e-16);
+  EXPECT_GT(sunk.n_W.dot(target().R_WB.col(2)), 0.999999);
 }
 
-TEST(ContactClip, PartialOverlapKeepsCornersOfBothPlatesAndCrossings) {
-  // Equal plates [-0.01, 0.01] x [-0.005, 0.005], the upper one shifted by (0.01, 0.002):
-  // overlap [0, 0.01] x [-0.003, 0.005] with one corner of each plate and two crossings.
-  const PlateShape s{0.01, 0.005, 5e-5};
-  Manifold m;
-  const BodyKin<double> A = kin(Vec3::Zero()), B = kin(Vec3(0.01, 0.002, 9e-5));
-  ASSERT_TRUE(clip_plates(A, s, B, s, 0, m));
-  ASSERT_EQ(m.count, 4);
-  int count[3] = {0, 0, 0};
-  std::array<VertexGeometry<double>, 8> g;
-  for (int k = 0; k < m.count; ++k) {
-    g[k] = vertex_geometry(A, s, B, s, m.poly[k]);
-    ++count[static_cast<int>(m.poly[k].kind)];
-    if (m.poly[k].kind == VertexKind::Incident) {
-      EXPECT_NEAR(g[k].u, 0.0, 1e-15);
-      EXPECT_NEAR(g[k].v, -0.003, 1e-15);
-    } else if (m.poly[k].kind == VertexKind::Reference) {
-      EXPECT_NEAR(g[k].u, 0.01, 1e-15);
-      EXPECT_NEAR(g[k].v, 0.005, 1e-15);
+TEST(RoundedPlate, PointsBesideAnEdgeAndBeyondACornerTouchTheRoundedRim) {
+  const PlateShape st{0.01, 0.005, 5e-5};
+  const double r_src = 5e-5;
+  // Beside the edge x = +hx: distance to the edge line in the x-z plane.
+  const double a = 3e-5, b = 4e-5;  // distance 5e-5
+  const PointContact<double> e =
+      point_on_plate(target(), st, in_target({st.hx + a, 0.001, b}), r_src, 1);
+  EXPECT_NEAR(e.depth, r_src + st.r - 5e-5, 1e-16);
+  EXPECT_NEAR((e.n_W - target().R_WB * Vec3(0.6, 0, 0.8)).norm(), 0, 1e-12);
+  // Beyond the corner (+hx, -hy): distance to the corner point.
+  const Vec3 off(2e-5, -2e-5, 1e-5);  // distance 3e-5
+  const PointContact<double> k =
+      point_on_plate(target(), st, in_target(Vec3(st.hx, -st.hy, 0) + off), r_src, 1);
+  EXPECT_NEAR(k.depth, r_src + st.r - 3e-5, 1e-16);
+  EXPECT_NEAR((k.n_W - target().R_WB * off / 3e-5).norm(), 0, 1e-12);
+  // The depth is continuous across the edge and so is its slope (distance to a convex set).
+  const double h = 6e-5, eps = 1e-9;
+  auto depth_at = [&](double x) {
+    return point_on_plate(target(), st, in_target({x, 0, h}), r_src, 1).depth;
+  };
+  EXPECT_NEAR(depth_at(st.hx - eps) - depth_at(st.hx + eps), eps * eps / (2 * h), 1e-18);
+  const double slope_in = (depth_at(st.hx - eps) - depth_at(st.hx - 3 * eps)) / (2 * eps);
+  const double slope_out = (depth_at(st.hx + 3 * eps) - depth_at(st.hx + eps)) / (2 * eps);
+  EXPECT_NEAR(slope_in, 0, 1e-6);
+  EXPECT_NEAR(slope_out, 0, 1e-3);  // -x/dist with x of a few eps: nearly flat
+}
+
+TEST(RoundedPlate, SamplesIntegrateBilinearFunctionsExactly) {
+  // Trapezoidal rule: exact for bilinear integrands. Mean of (x + hx)(y + hy) / (4 hx hy)
+  // over the rectangle is 1/4; the mean of x y is 0.
+  const PlateShape s{0.02, 0.005, 1e-4};
+  for (int n : {2, 3, 5}) {
+    const std::vector<PlateSample> samples = plate_samples(s, n);
+    ASSERT_EQ(samples.size(), static_cast<std::size_t>(n * n));
+    double sum = 0, bilinear = 0, xy = 0;
+    for (const PlateSample& p : samples) {
+      sum += p.weight;
+      bilinear += p.weight * (p.r_B.x() + s.hx) * (p.r_B.y() + s.hy) / (4 * s.hx * s.hy);
+      xy += p.weight * p.r_B.x() * p.r_B.y();
+      EXPECT_LE(std::abs(p.r_B.x()), s.hx + 1e-18);
+      EXPECT_LE(std::abs(p.r_B.y()), s.hy + 1e-18);
     }
-    EXPECT_NEAR(g[k].height, 9e-5, 1e-15);
+    EXPECT_NEAR(sum, 1, 1e-15) << n;
+    EXPECT_NEAR(bilinear, 0.25, 1e-15) << n;
+    EXPECT_NEAR(xy, 0, 1e-20) << n;
   }
-  EXPECT_EQ(count[0], 1);
-  EXPECT_EQ(count[1], 1);
-  EXPECT_EQ(count[2], 2);
-  std::array<double, 8> share;
-  ASSERT_TRUE(vertex_shares(g.data(), m.count, 2e-4, 2e-4, share.data()));
-  double total = 0;
-  for (int k = 0; k < m.count; ++k) total += share[k];
-  EXPECT_NEAR(total, 0.01 * 0.008 / 2e-4, 1e-14);  // overlap fraction
 }
 
-TEST(ContactClip, SeparatedProjectionsGiveNoPolygon) {
-  const PlateShape s{0.01, 0.01, 5e-5};
-  Manifold m;
-  EXPECT_FALSE(clip_plates(kin(Vec3::Zero()), s, kin(Vec3(0.03, 0, 0)), s, 0, m));
+TEST(RoundedPlate, TheSmallerPlateCarriesThePairAndEqualPlatesShareIt) {
+  const PlateShape big{0.05, 0.05, 5e-5}, small{0.01, 0.02, 5e-5};
+  const DirectionShares d1 = direction_shares(small, big);
+  EXPECT_EQ(d1.a_on_b, 1.0);
+  EXPECT_EQ(d1.b_on_a, 0.0);
+  const DirectionShares d2 = direction_shares(big, small);
+  EXPECT_EQ(d2.a_on_b, 0.0);
+  EXPECT_EQ(d2.b_on_a, 1.0);
+  const DirectionShares d3 = direction_shares(small, PlateShape{0.02, 0.01, 1e-4});
+  EXPECT_EQ(d3.a_on_b, 0.5);
+  EXPECT_EQ(d3.b_on_a, 0.5);
 }
 
 TEST(ContactBroadphase, GridFindsExactlyTheOverlappingBoxes) {
@@ -323,6 +330,13 @@ TEST(ContactForces, ForcesBalanceAndPushThePlatesApart) {
       f.tau_W[0] + tp.state.p_W[0].cross(f.f_W[0]) + f.tau_W[1] + tp.state.p_W[1].cross(f.f_W[1]);
   EXPECT_LT(m.norm(), 1e-12 * f.f_W[0].norm());
   EXPECT_GT(f.f_W[1].z(), 0);  // upper plate pushed up
+  // The per-pair report carries the same resultant.
+  const ContactSummary sum = contact_summary(tp.model, tp.state);
+  ASSERT_EQ(sum.pairs.size(), 1u);
+  EXPECT_EQ(sum.pairs[0].a, 0);
+  EXPECT_EQ(sum.pairs[0].b, 1);
+  EXPECT_EQ(sum.pairs[0].points, sum.active);
+  EXPECT_LT((sum.pairs[0].f_b_W - f.f_W[1]).norm(), 1e-12 * f.f_W[1].norm());
 }
 
 // Chain of 2 x 3 segments cut from one sheet, joined by force elements, panel 0 and 1
@@ -377,9 +391,13 @@ TEST(ContactRules, FoldedPanelsTouchButJoinedAndSameSheetNeighboursDoNot) {
   }
   const ContactSummary sum = contact_summary(m, s);
   // Facing pairs across the fold: (0,7), (1,6), (2,5), (3,4); (3,4) are joined and share the
-  // crease edge, so only three pairs of four corners each touch; coplanar neighbours in a
-  // panel never do.
-  EXPECT_EQ(sum.active, 12);
+  // crease edge, so only three facing pairs touch, with all 9 samples of both equal plates.
+  // Pairs offset by one segment, (0,6), (1,7), (1,5), (2,6), (2,4), (3,5), touch along the
+  // seam above the shared edge line (3 samples of each plate). Coplanar neighbours in a
+  // panel never touch.
+  ASSERT_EQ(m.contact.samples_per_edge, 3);
+  EXPECT_EQ(sum.active, 3 * 18 + 6 * 6);
+  EXPECT_EQ(sum.pairs.size(), 9u);
   EXPECT_NEAR(sum.max_penetration, 1e-5, 1e-12);
   for (const Vec3& p : sum.points_W) EXPECT_LT(p.x(), 3 * 0.01 + 1e-9);
 }

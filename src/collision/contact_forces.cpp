@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "collision/broadphase.hpp"
 #include "collision/contact_laws.hpp"
@@ -15,11 +17,11 @@ namespace finseg {
 
 namespace {
 
-/// Key of one contact point: pair (a < b), which plate is the reference, vertex identity.
-std::uint64_t point_key(int a, int b, bool ref_is_a, int vertex_id) {
+/// Key of one contact point: pair (a < b), direction (0: points of a on b, 1: points of b
+/// on a), sample index.
+std::uint64_t point_key(int a, int b, int dir, int sample) {
   return (static_cast<std::uint64_t>(a) << 40) | (static_cast<std::uint64_t>(b) << 16) |
-         (static_cast<std::uint64_t>(ref_is_a ? 1 : 0) << 8) |
-         static_cast<std::uint64_t>(vertex_id);
+         (static_cast<std::uint64_t>(dir) << 12) | static_cast<std::uint64_t>(sample);
 }
 
 const ContactAnchor* find_anchor(const ContactState& cs, std::uint64_t key) {
@@ -27,16 +29,6 @@ const ContactAnchor* find_anchor(const ContactState& cs, std::uint64_t key) {
       std::lower_bound(cs.anchors.begin(), cs.anchors.end(), key,
                        [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
   return (it != cs.anchors.end() && it->key == key) ? &*it : nullptr;
-}
-
-/// Reference plate the pair used at the last accepted step (0 = a, 1 = b), -1 if none.
-int previous_reference(const ContactState& cs, int a, int b) {
-  const std::uint64_t lo = point_key(a, b, false, 0), hi = point_key(a, b, true, 255);
-  const auto it =
-      std::lower_bound(cs.anchors.begin(), cs.anchors.end(), lo,
-                       [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
-  if (it == cs.anchors.end() || it->key > hi) return -1;
-  return ((it->key >> 8) & 1) ? 0 : 1;
 }
 
 /// Which pairs may touch (docs/contact.md, "Which pairs"): built once per evaluation.
@@ -121,14 +113,42 @@ class PairRules {
   int panels_ = 0;
 };
 
+BodyKin<double> kin_of(const State& s, int i) {
+  return {s.p_W[i], s.R_WB[i], s.v_W[i], s.w_W[i]};
+}
+
+/// Side of the target plate (+1 / -1 along its normal) a sample point of the source enters
+/// the contact from: where it was at the last commit (so that a step carrying the plates
+/// through each other is seen from the side they came from); without history, for nearly
+/// parallel plates the side of the source centroid (robust for stacks set up with some
+/// penetration), otherwise the point's own side.
+int entry_side(const State& state, int src, int tgt, const Vec3& r_B) {
+  const ContactState& h = state.contact;
+  const bool history = h.p_W.size() == state.p_W.size() && h.R_WB.size() == state.R_WB.size();
+  const Vec3& p_src = history ? h.p_W[src] : state.p_W[src];
+  const Mat3& R_src = history ? h.R_WB[src] : state.R_WB[src];
+  const Vec3& p_tgt = history ? h.p_W[tgt] : state.p_W[tgt];
+  const Vec3 n_tgt = (history ? h.R_WB[tgt] : state.R_WB[tgt]).col(2);
+  const bool parallel = std::abs(n_tgt.dot(R_src.col(2))) > std::cos(30 * kDegToRad);
+  const Vec3 from = (history || !parallel) ? Vec3(p_src + R_src * r_B) : p_src;
+  return n_tgt.dot(from - p_tgt) >= 0 ? 1 : -1;
+}
+
+/// One sample point of a pair in contact.
+struct ActivePoint {
+  int dir = 0;     ///< 0: a sampled on b, 1: b sampled on a
+  int sample = 0;  ///< index into the source plate's samples
+  Vec3 r_B;        ///< sample in the source body frame, m
+  double share = 0;
+  int side = 1;
+  const ContactAnchor* anchor = nullptr;
+};
+
 /// One touching pair after the narrow phase.
 struct PairContact {
   int a = -1, b = -1;
   PlateShape sa, sb;
-  Manifold m;
-  std::array<bool, 8> active{};
-  std::array<int, 8> side{};
-  std::array<const ContactAnchor*, 8> anchor{};
+  std::vector<ActivePoint> points;
 };
 
 /// Calls visit(const PairContact&) for every touching pair, in pair order.
@@ -139,6 +159,7 @@ void detect(const Model& model, const State& state, Visit&& visit) {
   // Buffers kept per thread between calls: large models then detect without page faults.
   thread_local std::vector<Aabb> boxes;
   thread_local BroadPhase broad;
+  thread_local PairContact pc;
   boxes.resize(n);
   for (int i = 0; i < n; ++i)
     boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i].size, def.margin);
@@ -147,122 +168,104 @@ void detect(const Model& model, const State& state, Visit&& visit) {
   const PairRules rules(model);
   for (const auto& [a, b] : candidates) {
     if (!rules.may_touch(a, b)) continue;
-    PairContact pc;
     pc.a = a;
     pc.b = b;
     pc.sa = plate_shape(model.bodies[a].size);
     pc.sb = plate_shape(model.bodies[b].size);
-    const BodyKin<double> A{state.p_W[a], state.R_WB[a], state.v_W[a], state.w_W[a]};
-    const BodyKin<double> B{state.p_W[b], state.R_WB[b], state.v_W[b], state.w_W[b]};
-    if (!clip_plates(A, pc.sa, B, pc.sb, previous_reference(state.contact, a, b), pc.m)) continue;
-    const BodyKin<double>& ref = pc.m.ref_is_a ? A : B;
-    const BodyKin<double>& inc = pc.m.ref_is_a ? B : A;
-    const PlateShape& sr = pc.m.ref_is_a ? pc.sa : pc.sb;
-    const PlateShape& si = pc.m.ref_is_a ? pc.sb : pc.sa;
-    const double reach = sr.r + si.r;
-    // New points of nearly parallel plates take the side of the incident centroid (robust
-    // for stacks even when a point has sunk past the mid-plane); steep ones their own side.
-    const Vec3 n_ref = ref.R_WB.col(2);
-    const bool parallel = std::abs(n_ref.dot(inc.R_WB.col(2))) > std::cos(30 * kDegToRad);
-    const int pair_side = n_ref.dot(inc.p_W - ref.p_W) >= 0 ? 1 : -1;
-    bool any = false;
-    for (int k = 0; k < pc.m.count; ++k) {
-      const VertexGeometry<double> g = vertex_geometry(ref, sr, inc, si, pc.m.poly[k]);
-      const ContactAnchor* an =
-          find_anchor(state.contact, point_key(a, b, pc.m.ref_is_a, pc.m.poly[k].id()));
-      const int side = an ? an->side : parallel ? pair_side : (g.height >= 0 ? 1 : -1);
-      const double depth = reach - side * g.height;
-      pc.side[k] = side;
-      pc.anchor[k] = an;
-      pc.active[k] = g.valid && depth > 0;
-      any = any || pc.active[k];
+    pc.points.clear();
+    const DirectionShares shares = direction_shares(pc.sa, pc.sb);
+    for (int dir = 0; dir < 2; ++dir) {
+      const double dir_share = dir == 0 ? shares.a_on_b : shares.b_on_a;
+      if (dir_share <= 0) continue;
+      const int src = dir == 0 ? a : b, tgt = dir == 0 ? b : a;
+      const PlateShape& ss = dir == 0 ? pc.sa : pc.sb;
+      const PlateShape& st = dir == 0 ? pc.sb : pc.sa;
+      const BodyKin<double> S = kin_of(state, src), G = kin_of(state, tgt);
+      const std::vector<PlateSample> samples = plate_samples(ss, def.samples_per_edge);
+      for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
+        const Vec3 p_W = S.point_W(samples[k].r_B);
+        const ContactAnchor* an = find_anchor(state.contact, point_key(a, b, dir, k));
+        const int side = an ? an->side : entry_side(state, src, tgt, samples[k].r_B);
+        const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
+        if (!(c.depth > 0)) continue;
+        pc.points.push_back({dir, k, samples[k].r_B, dir_share * samples[k].weight, side, an});
+      }
     }
-    if (any) visit(pc);
+    if (!pc.points.empty()) visit(std::as_const(pc));
   }
 }
 
 /// Per-point values reported to probes and used to update the history.
 struct PointReport {
-  int vertex = 0;
   Vec3 x_W, n_W, v_t;
   double depth = 0, normal = 0, friction = 0, share = 0, penetration_rate = 0;
   Vec3 f_t = Vec3::Zero();
 };
+
+/// Friction force of one point for scalar T (eq. 19 or the anchor spring).
+template <class T>
+Vec3T<T> friction_force(const ContactDef& def, const ActivePoint& pt, const T& fn,
+                        const Vec3T<T>& n, const Vec3T<T>& v_t, const BodyKin<T>& src,
+                        const BodyKin<T>& tgt) {
+  if (def.friction == FrictionModel::Continuous ||
+      (def.friction == FrictionModel::Anchor && pt.anchor == nullptr))
+    return continuous_friction(def, fn, v_t);
+  if (def.friction != FrictionModel::Anchor) return Vec3T<T>::Zero();
+  using std::sqrt;
+  const ContactAnchor& an = *pt.anchor;
+  const Vec3T<T> z = src.point_W(an.r_src_B) - tgt.point_W(an.r_tgt_B);
+  const Vec3T<T> z_t = z - n * n.dot(z);
+  Vec3T<T> f_t =
+      -T(pt.share) * (T(def.tangential_stiffness) * z_t + T(def.tangential_damping) * v_t);
+  const T limit = T(an.sliding ? def.mu_dynamic : def.mu_static) * fn;
+  const T f2 = f_t.squaredNorm();
+  if (value_of(f2) > value_of(limit) * value_of(limit))
+    f_t = value_of(f2) > 0 ? Vec3T<T>(f_t * (limit / sqrt(f2))) : Vec3T<T>::Zero();
+  return f_t;
+}
 
 /// Forces of one pair for scalar T; adds them to the two wrenches, returns elastic energy.
 template <class T>
 T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& A,
                 const BodyKin<T>& B, Wrench<T>& wa, Wrench<T>& wb,
                 std::vector<PointReport>* report) {
-  const BodyKin<T>& ref = pc.m.ref_is_a ? A : B;
-  const BodyKin<T>& inc = pc.m.ref_is_a ? B : A;
-  Wrench<T>& w_ref = pc.m.ref_is_a ? wa : wb;
-  Wrench<T>& w_inc = pc.m.ref_is_a ? wb : wa;
-  const PlateShape& sr = pc.m.ref_is_a ? pc.sa : pc.sb;
-  const PlateShape& si = pc.m.ref_is_a ? pc.sb : pc.sa;
-  std::array<VertexGeometry<T>, 8> g;
-  for (int k = 0; k < pc.m.count; ++k) g[k] = vertex_geometry(ref, sr, inc, si, pc.m.poly[k]);
-  std::array<T, 8> share;
-  if (!vertex_shares(g.data(), pc.m.count, projected_area(ref, inc, si), 4 * si.hx * si.hy,
-                     share.data()))
-    return T(0);
-  const Vec3T<T> n_ref = ref.R_WB.col(2);
   double energy = 0;
-  for (int k = 0; k < pc.m.count; ++k) {
-    if (!pc.active[k]) continue;
-    const T side(static_cast<double>(pc.side[k]));
-    const Vec3T<T> n = side * n_ref;  // from the reference towards the incident plate
-    const T depth = T(sr.r + si.r) - side * g[k].height;
-    const Vec3T<T> x = g[k].p_inc - n_ref * (g[k].height / T(2));
+  for (const ActivePoint& pt : pc.points) {
+    const BodyKin<T>& src = pt.dir == 0 ? A : B;
+    const BodyKin<T>& tgt = pt.dir == 0 ? B : A;
+    Wrench<T>& w_src = pt.dir == 0 ? wa : wb;
+    Wrench<T>& w_tgt = pt.dir == 0 ? wb : wa;
+    const PlateShape& ss = pt.dir == 0 ? pc.sa : pc.sb;
+    const PlateShape& st = pt.dir == 0 ? pc.sb : pc.sa;
+    const PointContact<T> c = point_on_plate(tgt, st, src.point_W(pt.r_B), ss.r, pt.side);
     const Vec3T<T> v_rel =
-        (inc.v_W + inc.w_W.cross(x - inc.p_W)) - (ref.v_W + ref.w_W.cross(x - ref.p_W));
-    const T rate = -n.dot(v_rel);
-    const ContactAnchor* an = pc.anchor[k];
-    const double v0 = an ? an->impact_speed : value_of(rate);
-    const T fn = share[k] * normal_force(def, depth, rate, v0);
-    energy += value_of(share[k]) * contact_energy(def, value_of(depth));
-    const Vec3T<T> v_t = v_rel - n * n.dot(v_rel);
-    Vec3T<T> f_t = Vec3T<T>::Zero();
-    if (def.friction == FrictionModel::Continuous ||
-        (def.friction == FrictionModel::Anchor && an == nullptr)) {
-      f_t = continuous_friction(def, fn, v_t);
-    } else if (def.friction == FrictionModel::Anchor) {
-      using std::sqrt;
-      const Vec3T<T> z = inc.point_W(an->r_inc_B) - ref.point_W(an->r_ref_B);
-      const Vec3T<T> z_t = z - n * n.dot(z);
-      f_t = -share[k] * (T(def.tangential_stiffness) * z_t + T(def.tangential_damping) * v_t);
-      const double mu = an->sliding ? def.mu_dynamic : def.mu_static;
-      const T limit = T(mu) * fn;
-      const T f2 = f_t.squaredNorm();
-      if (value_of(f2) > value_of(limit) * value_of(limit)) {
-        f_t = value_of(f2) > 0 ? Vec3T<T>(f_t * (limit / sqrt(f2))) : Vec3T<T>::Zero();
-      }
-    }
-    const Vec3T<T> f = fn * n + f_t;
-    w_inc.add_force_at(f, x, inc.p_W);
-    w_ref.add_force_at(-f, x, ref.p_W);
+        (src.v_W + src.w_W.cross(c.x_W - src.p_W)) - (tgt.v_W + tgt.w_W.cross(c.x_W - tgt.p_W));
+    const T rate = -c.n_W.dot(v_rel);
+    const double v0 = pt.anchor ? pt.anchor->impact_speed : value_of(rate);
+    const T fn = T(pt.share) * normal_force(def, c.depth, rate, v0);
+    energy += pt.share * contact_energy(def, value_of(c.depth));
+    const Vec3T<T> v_t = v_rel - c.n_W * c.n_W.dot(v_rel);
+    const Vec3T<T> f_t = friction_force(def, pt, fn, c.n_W, v_t, src, tgt);
+    const Vec3T<T> f = fn * c.n_W + f_t;
+    w_src.add_force_at(f, c.x_W, src.p_W);
+    w_tgt.add_force_at(-f, c.x_W, tgt.p_W);
     if (report) {
       PointReport r;
-      r.vertex = k;
       for (int i = 0; i < 3; ++i) {
-        r.x_W[i] = value_of(x[i]);
-        r.n_W[i] = value_of(n[i]);
+        r.x_W[i] = value_of(c.x_W[i]);
+        r.n_W[i] = value_of(c.n_W[i]);
         r.v_t[i] = value_of(v_t[i]);
         r.f_t[i] = value_of(f_t[i]);
       }
-      r.depth = value_of(depth);
+      r.depth = value_of(c.depth);
       r.normal = value_of(fn);
       r.friction = r.f_t.norm();
-      r.share = value_of(share[k]);
+      r.share = pt.share;
       r.penetration_rate = value_of(rate);
       report->push_back(r);
     }
   }
   return T(energy);
-}
-
-BodyKin<double> kin_of(const State& s, int i) {
-  return {s.p_W[i], s.R_WB[i], s.v_W[i], s.w_W[i]};
 }
 
 }  // namespace
@@ -280,7 +283,7 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
 
 void commit_contact_history(const Model& model, State& state) {
   if (!model.contact.enabled) {
-    state.contact.anchors.clear();
+    state.contact = ContactState{};
     return;
   }
   const ContactDef& def = model.contact;
@@ -291,39 +294,39 @@ void commit_contact_history(const Model& model, State& state) {
     const BodyKin<double> A = kin_of(state, pc.a), B = kin_of(state, pc.b);
     Wrench<double> wa, wb;
     evaluate_pair(def, pc, A, B, wa, wb, &rep);
-    const BodyKin<double>& ref = pc.m.ref_is_a ? A : B;
-    const BodyKin<double>& inc = pc.m.ref_is_a ? B : A;
-    for (const PointReport& r : rep) {
-      const int k = r.vertex;
+    for (std::size_t k = 0; k < rep.size(); ++k) {
+      const PointReport& r = rep[k];
+      const ActivePoint& pt = pc.points[k];
+      const BodyKin<double>& src = pt.dir == 0 ? A : B;
+      const BodyKin<double>& tgt = pt.dir == 0 ? B : A;
       ContactAnchor an;
-      an.key = point_key(pc.a, pc.b, pc.m.ref_is_a, pc.m.poly[k].id());
-      const ContactAnchor* old = pc.anchor[k];
+      an.key = point_key(pc.a, pc.b, pt.dir, pt.sample);
       const double kt = r.share * def.tangential_stiffness;
-      if (old) {
-        an = *old;
+      if (pt.anchor) {
+        an = *pt.anchor;
         if (def.friction == FrictionModel::Anchor && kt > 0) {
-          const Vec3 xi = inc.point_W(an.r_inc_B), xr = ref.point_W(an.r_ref_B);
-          const Vec3 z = xi - xr;
+          const Vec3 xs = src.point_W(an.r_src_B), xt = tgt.point_W(an.r_tgt_B);
+          const Vec3 z = xs - xt;
           const Vec3 z_t = z - r.n_W * r.n_W.dot(z);
           const double mu = an.sliding ? def.mu_dynamic : def.mu_static;
           if (kt * z_t.norm() > mu * r.normal) {
             // Slipping: drag the anchor so that the spring carries the dynamic limit.
             an.sliding = true;
             const Vec3 z_new = z_t * (def.mu_dynamic * r.normal / (kt * z_t.norm()));
-            an.r_inc_B = inc.R_WB.transpose() * (xr + z_new - inc.p_W);
+            an.r_src_B = src.R_WB.transpose() * (xt + z_new - src.p_W);
           } else if (an.sliding && r.v_t.norm() < def.stiction_speed) {
             an.sliding = false;
           }
         }
       } else {
-        an.side = pc.side[k];
+        an.side = pt.side;
         an.impact_speed = r.penetration_rate;
         an.sliding = false;
         // New anchor placed so that its spring starts with the friction force just applied.
         Vec3 offset = Vec3::Zero();
         if (def.friction == FrictionModel::Anchor && kt > 0) offset = -r.f_t / kt;
-        an.r_ref_B = ref.R_WB.transpose() * (r.x_W - ref.p_W);
-        an.r_inc_B = inc.R_WB.transpose() * (r.x_W + offset - inc.p_W);
+        an.r_tgt_B = tgt.R_WB.transpose() * (r.x_W - tgt.p_W);
+        an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
       }
       next.push_back(an);
     }
@@ -331,6 +334,8 @@ void commit_contact_history(const Model& model, State& state) {
   std::sort(next.begin(), next.end(),
             [](const ContactAnchor& x, const ContactAnchor& y) { return x.key < y.key; });
   state.contact.anchors = std::move(next);
+  state.contact.p_W = state.p_W;
+  state.contact.R_WB = state.R_WB;
 }
 
 ContactSummary contact_summary(const Model& model, const State& state) {
@@ -341,14 +346,24 @@ ContactSummary contact_summary(const Model& model, const State& state) {
     rep.clear();
     Wrench<double> wa, wb;
     evaluate_pair(model.contact, pc, kin_of(state, pc.a), kin_of(state, pc.b), wa, wb, &rep);
+    ContactPairForce pair;
+    pair.a = pc.a;
+    pair.b = pc.b;
     for (const PointReport& r : rep) {
-      if (!(r.share > 1e-12)) continue;  // edge-on-edge overlap of zero area
       ++s.active;
       s.total_normal_force += r.normal;
       s.total_friction_force += r.friction;
       s.max_penetration = std::max(s.max_penetration, r.depth);
       s.points_W.push_back(r.x_W);
+      ++pair.points;
+      pair.normal_force += r.normal;
+      pair.friction_force += r.friction;
+      pair.max_penetration = std::max(pair.max_penetration, r.depth);
+      // Force on b: the reported normal points from the target towards the source point.
+      const double sign = pc.points[&r - rep.data()].dir == 0 ? -1.0 : 1.0;
+      pair.f_b_W += sign * (r.normal * r.n_W + r.f_t);
     }
+    s.pairs.push_back(pair);
   });
   return s;
 }

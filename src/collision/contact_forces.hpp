@@ -16,13 +16,24 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
 /// Updates contact history (friction anchors) after an accepted step.
 void commit_contact_history(const Model& model, State& state);
 
+/// Contact of one pair of bodies.
+struct ContactPairForce {
+  int a = -1, b = -1;          ///< body indices, a < b
+  int points = 0;              ///< active sample points
+  double normal_force = 0;     ///< N (sum over the points)
+  double friction_force = 0;   ///< N (sum of magnitudes)
+  double max_penetration = 0;  ///< m
+  Vec3 f_b_W = Vec3::Zero();   ///< resultant force on body b (normal + friction), N
+};
+
 /// What the contact probes record.
 struct ContactSummary {
-  int active = 0;                   ///< number of contact points with positive penetration
-  double total_normal_force = 0;    ///< N
-  double total_friction_force = 0;  ///< N (sum of magnitudes)
-  double max_penetration = 0;       ///< m
-  std::vector<Vec3> points_W;       ///< active contact points, m
+  int active = 0;                       ///< number of contact points with positive penetration
+  double total_normal_force = 0;        ///< N
+  double total_friction_force = 0;      ///< N (sum of magnitudes)
+  double max_penetration = 0;           ///< m
+  std::vector<Vec3> points_W;           ///< active contact points, m
+  std::vector<ContactPairForce> pairs;  ///< touching pairs, in body order
 };
 ContactSummary contact_summary(const Model& model, const State& state);
 

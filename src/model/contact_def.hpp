@@ -54,22 +54,29 @@ struct ContactDef {
   /// Lists of panels that may touch each other; empty: every panel with every panel.
   std::vector<std::vector<int>> groups;
   double margin = 0;  ///< extra broad-phase box growth, m, >= 0
+  /// Sample points per plate edge of the narrow phase (a grid of n x n points), 2..16.
+  int samples_per_edge = 3;
 };
 
-/// History of one contact point (a vertex of the overlap polygon of one pair), kept from
-/// one accepted step to the next.
+/// History of one contact point (a sample point of one plate against the other plate of a
+/// pair), kept from one accepted step to the next.
 struct ContactAnchor {
-  std::uint64_t key = 0;        ///< pair and vertex identity (collision/contact_forces.cpp)
-  Vec3 r_inc_B = Vec3::Zero();  ///< anchor on the incident body, its body frame, m
-  Vec3 r_ref_B = Vec3::Zero();  ///< anchor on the reference body, its body frame, m
+  std::uint64_t key = 0;        ///< pair and sample identity (collision/contact_forces.cpp)
+  Vec3 r_src_B = Vec3::Zero();  ///< anchor on the sampled (source) body, its body frame, m
+  Vec3 r_tgt_B = Vec3::Zero();  ///< anchor on the target body, its body frame, m
   double impact_speed = 0;      ///< penetration rate when the contact began, m/s
-  int side = 1;                 ///< which side of the reference plate the point is on
+  int side = 1;                 ///< which face of the target plate the point is on
   bool sliding = false;         ///< Anchor friction: currently slipping
 };
 
 /// Contact history in State (sorted by key); written only by commit_contact_history().
 struct ContactState {
   std::vector<ContactAnchor> anchors;
+  /// Body poses at the last commit: a point that enters the contact takes the side of the
+  /// target it was on then, so a step that carries two plates through each other meets the
+  /// full force instead of a contact seen from the far side.
+  std::vector<Vec3> p_W;
+  std::vector<Mat3> R_WB;
 };
 
 }  // namespace finseg
