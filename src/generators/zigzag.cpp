@@ -40,6 +40,12 @@ ContactDef zigzag_contact_defaults() {
   return c;
 }
 
+std::vector<std::vector<int>> adjacent_panel_groups(int panels) {
+  std::vector<std::vector<int>> g;
+  for (int p = 0; p + 1 < panels; ++p) g.push_back({p, p + 1});
+  return g;
+}
+
 void validate(const ZigzagSpec& s, const std::string& src) {
   require_positive(s.length, src, "length", "m");
   require_positive(s.width, src, "width", "m");
@@ -148,6 +154,7 @@ Model build_zigzag_model(const ZigzagSpec& s) {
   if (s.gravity) m.gravity_W = Vec3(0, 0, -9.81);
   m.contact = s.contact_settings;
   m.contact.enabled = s.contact;
+  if (m.contact.groups.empty()) m.contact.groups = adjacent_panel_groups(s.panels);
   const double s_crease = s.pulled_crease * panel_length(s);
   const MaterialPoint at = locate_material_point(m, s_crease, 0.5 * s.width);
   DriveDef d;

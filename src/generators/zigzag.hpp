@@ -18,6 +18,10 @@ class CreaseLaw;
 /// (docs/contact.md's 80 g/m^2 paper values) and elastic-anchor friction for the static pull.
 ContactDef zigzag_contact_defaults();
 
+/// Contact groups of the paper's model (section 2.3): each panel with its neighbours,
+/// panels (1)-(2), (2)-(3), ... (0-based indices).
+std::vector<std::vector<int>> adjacent_panel_groups(int panels);
+
 /// Parameters of the zigzag strip and its pull test. SI units; angles in rad.
 struct ZigzagSpec {
   double length = 0.480, width = 0.040, thickness = 1.0e-4;  ///< m (paper: 480 x 40 mm)
@@ -41,8 +45,9 @@ struct ZigzagSpec {
   std::vector<std::shared_ptr<const CreaseLaw>> crease_laws;
   StiffnessOverride overrides;  ///< e.g. the taped (stiffened) panels' bending rigidity
   bool gravity = true;
-  bool contact = true;                                      ///< contact between panels on/off
-  ContactDef contact_settings = zigzag_contact_defaults();  ///< used when `contact`
+  bool contact = true;  ///< contact between panels on/off
+  /// Used when `contact`; empty `groups` means adjacent_panel_groups(panels).
+  ContactDef contact_settings = zigzag_contact_defaults();
   double damping_time = 0;
 };
 

@@ -199,8 +199,10 @@ Model read_zigzag(const Fields& root, const Fields& sheet, const SheetSpec& base
       zigzag_field);
   if (const auto v = z.optional_number("pull_speed", non_negative("m/s"))) m.drives[0].speed = *v;
   m.gravity_W = root.vector3("gravity", Vec3(0, 0, -9.81), "m/s^2");
-  if (replace_contact)
+  if (replace_contact) {
     m.contact = read_contact_section(root.node("contact"), root.context("contact"));
+    if (m.contact.groups.empty()) m.contact.groups = adjacent_panel_groups(s.panels);
+  }
   return m;
 }
 
