@@ -118,20 +118,27 @@ BodyKin<double> kin_of(const State& s, int i) {
 }
 
 /// Side of the target plate (+1 / -1 along its normal) a sample point of the source enters
-/// the contact from: where it was at the last commit (so that a step carrying the plates
-/// through each other is seen from the side they came from); without history, for nearly
-/// parallel plates the side of the source centroid (robust for stacks set up with some
-/// penetration), otherwise the point's own side.
-int entry_side(const State& state, int src, int tgt, const Vec3& r_B) {
+/// the contact from: the side it is on, unless its path since the last commit (straight, in
+/// the target's frame) went through the target's face; then the side it came from, so that
+/// a step carrying the plates through each other meets the full force. Without history, for
+/// nearly parallel plates the side of the source centroid (robust for stacks set up with
+/// some penetration).
+int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const PlateShape& st) {
+  const Vec3 now =
+      state.R_WB[tgt].transpose() * (state.p_W[src] + state.R_WB[src] * r_B - state.p_W[tgt]);
   const ContactState& h = state.contact;
-  const bool history = h.p_W.size() == state.p_W.size() && h.R_WB.size() == state.R_WB.size();
-  const Vec3& p_src = history ? h.p_W[src] : state.p_W[src];
-  const Mat3& R_src = history ? h.R_WB[src] : state.R_WB[src];
-  const Vec3& p_tgt = history ? h.p_W[tgt] : state.p_W[tgt];
-  const Vec3 n_tgt = (history ? h.R_WB[tgt] : state.R_WB[tgt]).col(2);
-  const bool parallel = std::abs(n_tgt.dot(R_src.col(2))) > std::cos(30 * kDegToRad);
-  const Vec3 from = (history || !parallel) ? Vec3(p_src + R_src * r_B) : p_src;
-  return n_tgt.dot(from - p_tgt) >= 0 ? 1 : -1;
+  if (h.p_W.size() == state.p_W.size() && h.R_WB.size() == state.R_WB.size()) {
+    const Vec3 was = h.R_WB[tgt].transpose() * (h.p_W[src] + h.R_WB[src] * r_B - h.p_W[tgt]);
+    if ((was.z() > 0) != (now.z() > 0)) {
+      const Vec3 cross = was + (was.z() / (was.z() - now.z())) * (now - was);
+      if (std::abs(cross.x()) <= st.hx && std::abs(cross.y()) <= st.hy) return was.z() > 0 ? 1 : -1;
+    }
+    return now.z() >= 0 ? 1 : -1;
+  }
+  const Vec3 n_tgt = state.R_WB[tgt].col(2);
+  const bool parallel = std::abs(n_tgt.dot(state.R_WB[src].col(2))) > std::cos(30 * kDegToRad);
+  if (parallel) return n_tgt.dot(state.p_W[src] - state.p_W[tgt]) >= 0 ? 1 : -1;
+  return now.z() >= 0 ? 1 : -1;
 }
 
 /// One sample point of a pair in contact.
@@ -185,7 +192,7 @@ void detect(const Model& model, const State& state, Visit&& visit) {
       for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
         const Vec3 p_W = S.point_W(samples[k].r_B);
         const ContactAnchor* an = find_anchor(state.contact, point_key(a, b, dir, k));
-        const int side = an ? an->side : entry_side(state, src, tgt, samples[k].r_B);
+        const int side = an ? an->side : entry_side(state, src, tgt, samples[k].r_B, st);
         const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
         if (!(c.depth > 0)) continue;
         pc.points.push_back({dir, k, samples[k].r_B, dir_share * samples[k].weight, side, an});

@@ -187,6 +187,7 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
       continue;
     }
     if (proximal_step(model, state, M, h, settings, f, stats)) {
+      commit_history(model, state);  // the settling path is history too (sides, anchors)
       if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
       h *= 2;
     } else {
@@ -212,6 +213,9 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
     const State start = state;
     set(state, x_try);
     if (solve_equilibrium(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
+      // Every equilibrium on the path is history: crease openings, friction anchors and
+      // the side each contact point is on follow the path, not only the output points.
+      commit_history(model, state);
       x = x_try;
       dx *= 1.5;
       if ((b > a ? dx > (b - a) : dx < (b - a))) dx = b - a;
@@ -227,6 +231,7 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
           (b > a) ? std::min(b, x + kJump * (b - a)) : std::max(b, x + kJump * (b - a));
       set(state, x_jump);
       if (settle(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
+        commit_history(model, state);
         ++stats.settles;
         x = x_jump;
         dx = kJump * (b - a);
