@@ -136,25 +136,27 @@ bool tunnelled(const Model& model, const State& state) {
   return contact_summary(model, state).max_penetration > 0.5 * model.sheet.thickness;
 }
 
-// One pseudo-time step of the proximal iteration from the current poses q_n: solves
-//   M (q - q_n) / h^2 = F(q)
-// by Newton on the matrix M / h^2 - dF/dq. For small h the matrix is positive definite even
-// where the stiffness is not (past a limit point), so the step exists and moves downhill in
-// the energy. Returns true when the implicit equation is solved (the step is then accepted:
-// no merit test, which would sit at round-off level for small steps).
-bool proximal_step(const Model& model, State& state, const Eigen::SparseMatrix<double>& M, double h,
-                   const SolverSettings& settings, BodyForces& f, SolverStats& stats) {
+// One pseudo-time step of dynamic relaxation from the current poses q_n with velocity v
+// (implicit Euler on the undamped structure):
+//   M (q - q_n - h v) / h^2 = F(q)
+// solved by Newton on the matrix M / h^2 - dF/dq. For small h the matrix is positive
+// definite even where the stiffness is not (past a limit point), so the step exists. On
+// success `moved` holds q - q_n (no merit test, which would sit at round-off level for small
+// steps).
+bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix<double>& M,
+                     double h, const Eigen::VectorXd& v, const SolverSettings& settings,
+                     BodyForces& f, SolverStats& stats, Eigen::VectorXd& moved) {
   ForceJacobian jac;
   jac.with_velocity = false;
   const double L = std::max(model.sheet.length, 1e-3);
   const Eigen::SparseMatrix<double> M_h = M / (h * h);
-  Eigen::VectorXd moved = Eigen::VectorXd::Zero(model.num_dofs);
+  moved = Eigen::VectorXd::Zero(model.num_dofs);
   for (int it = 0; it < settings.max_iterations; ++it) {
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
     ++stats.jacobian_evaluations;
     ++stats.newton_iterations;
-    const Eigen::VectorXd res = generalized_forces(model, f) - M_h * moved;
+    const Eigen::VectorXd res = generalized_forces(model, f) - M_h * (moved - h * v);
     Eigen::VectorXd dq;
     if (!res.allFinite() || !sparse_solve(M_h - jac.dq, res, dq) || !dq.allFinite()) return false;
     // A step that turns a body by more than 0.1 rad is outside the linearisation: shorter h.
@@ -168,15 +170,17 @@ bool proximal_step(const Model& model, State& state, const Eigen::SparseMatrix<d
 
 // Where the equilibrium path ends at a limit point (the strip snaps to another branch, as the
 // real one does under the slowly turned crank) or at a kink of the contact force, Newton
-// finds no nearby equilibrium. Pseudo-transient continuation then follows the mass-weighted
-// steepest descent by proximal steps with a pseudo time step h that grows on success, until
-// Newton converges from where it has arrived.
+// finds no nearby equilibrium. Dynamic relaxation then lets the strip move under its
+// unbalanced forces with kinetic damping (the velocity is zeroed whenever the forces turn
+// against it, i.e. at each peak of the kinetic energy), in pseudo-time steps h that grow on
+// success, until Newton converges from where it has arrived.
 bool settle(const Model& model, State& state, const SolverSettings& settings, double fscale,
             BodyForces& f, SolverStats& stats) {
   const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
   constexpr double kFirstStep = 1e-4, kNewtonStep = 1.0, kSmallestStep = 1e-9;  // s
-  constexpr int kMaxSteps = 400;
+  constexpr int kMaxSteps = 1000;
   double h = kFirstStep;
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(model.num_dofs), moved;
   for (int k = 0; k < kMaxSteps; ++k) {
     const State base = state;
     if (h >= kNewtonStep) {
@@ -186,9 +190,11 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
       h = 0.25 * kNewtonStep;
       continue;
     }
-    if (proximal_step(model, state, M, h, settings, f, stats)) {
+    if (relaxation_step(model, state, M, h, v, settings, f, stats, moved)) {
       commit_history(model, state);  // the settling path is history too (sides, anchors)
       if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
+      v = moved / h;
+      if (generalized_forces(model, f).dot(v) < 0) v.setZero();
       h *= 2;
     } else {
       state = base;
