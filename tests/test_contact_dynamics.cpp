@@ -10,6 +10,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "collision/contact_laws.hpp"
+#include "contact_test_util.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -18,18 +19,7 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kThick = 2e-4;  // plate thickness, m
 
-BodyDef plate(const std::string& name, double mass, const Vec3& size, const Vec3& p,
-              const Mat3& R = Mat3::Identity(), bool fixed = false) {
-  BodyDef b;
-  b.name = name;
-  b.mass = mass;
-  b.size = size;
-  b.J_B = box_inertia(mass, size);
-  b.p0_W = p;
-  b.R0_WB = R;
-  b.fixed = fixed;
-  return b;
-}
+using test::plate;
 
 // --- 1-DOF references, written from the laws' published formulas --------------------------
 

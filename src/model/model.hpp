@@ -79,6 +79,7 @@ struct ProbeDef {
   int body = -1;                ///< Point: body carrying the point
   Vec3 point_B = Vec3::Zero();  ///< Point: position in the body frame
   int drive = -1;               ///< Drive: which drive's gauge
+  bool pairs = false;           ///< Contact: also record each touching pair's forces
 };
 
 /// Description of the flat sheet a model was cut from (used by writers and probes).

@@ -62,7 +62,8 @@ RunRecorder::RunRecorder(const Model& model, const SolverSettings& settings,
       dynamic_(settings.kind != SolverKind::Static),
       last_x_(NAN) {
   for (const ProbeDef& p : model.probes) {
-    tables_.push_back({p.name, p.kind, columns_of(p.kind, abscissa_), {}});
+    const bool pairs = p.pairs && p.kind == ProbeKind::Contact;
+    tables_.push_back({p.name, p.kind, columns_of(p.kind, abscissa_), {}, pairs, {}});
   }
 }
 
@@ -110,6 +111,8 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
   if (model_.contact.enabled) contact = contact_summary(model_, state);
   for (std::size_t k = 0; k < tables_.size(); ++k) {
     tables_[k].rows.push_back(row(model_.probes[k], state, forces, &contact));
+    if (!tables_[k].pairs) continue;
+    for (const ContactPairForce& p : contact.pairs) tables_[k].pair_rows.push_back({last_x_, p});
   }
   if (options_.frames) frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W});
   if (options_.phases && !model_.drives.empty()) {

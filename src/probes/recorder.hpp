@@ -1,11 +1,13 @@
 // Records every probe of a model at each solver output (one table per probe, one row per
-// output), plus animation frames and deployment-phase samples when asked. `finseg run`
-// writes the tables as CSV (docs/scene.md lists the columns).
+// output; a contact probe with `pairs` also keeps every touching pair's forces), plus
+// animation frames and deployment-phase samples when asked. `finseg run` writes the tables
+// as CSV (docs/scene.md lists the columns).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "collision/contact_forces.hpp"
 #include "elements/assemble.hpp"
 #include "model/model.hpp"
 #include "model/state.hpp"
@@ -14,10 +16,12 @@
 #include "writers/frames.hpp"
 
 namespace finseg {
-struct ContactSummary;
-}
 
-namespace finseg {
+/// One touching pair at one output, for contact probes with `pairs`.
+struct PairSample {
+  double x = 0;  ///< the run's abscissa at that output
+  ContactPairForce force;
+};
 
 /// Recorded history of one probe; every column name carries its unit (e.g. "z_m").
 struct ProbeTable {
@@ -25,6 +29,8 @@ struct ProbeTable {
   ProbeKind kind = ProbeKind::Point;
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
+  bool pairs = false;                 ///< contact probe recording per-pair forces
+  std::vector<PairSample> pair_rows;  ///< when `pairs`: every touching pair of every output
 };
 
 /// What the run's x axis is: "t_s" (dynamic solvers), "pull_displacement_m" (static solver

@@ -118,23 +118,43 @@ ProbeKind probe_kind(const Fields& f) {
   return it->second;
 }
 
+// Names of the files a probe's table goes to (without ".csv").
+std::vector<std::string> file_stems(const ProbeDef& p) {
+  if (p.pairs) return {p.name, p.name + "_pairs"};
+  return {p.name};
+}
+
+// Two probes must not write the same file: equal names, or a name equal to another
+// contact probe's pairs file.
+void check_file_names(const Fields& f, const ProbeDef& p, const std::vector<ProbeDef>& earlier) {
+  for (const ProbeDef& other : earlier) {
+    if (other.name == p.name) f.fail("name", "'" + p.name + "' is used twice; names must differ");
+    for (const std::string& a : file_stems(p)) {
+      for (const std::string& b : file_stems(other)) {
+        if (a == b)
+          f.fail("name", "'" + p.name + "' and '" + other.name + "' both write " + a + ".csv");
+      }
+    }
+  }
+}
+
 void read_probes(const Fields& root, Model& m) {
   if (!root.has("probes")) return;  // keep the generator's probes
   m.probes.clear();
   const auto items = sequence(root.node("probes"), root.context("probes"), "probes");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Fields f(items[i], {root.context().file, item_field("probes", i)},
-                   {"name", "type", "at", "body", "point", "drive"});
+                   {"name", "type", "at", "body", "point", "drive", "pairs"});
     ProbeDef p;
     p.name = f.required_word("name");
     if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
       f.fail("name",
              "'" + p.name + "'; must be a non-empty file-name-safe word (no / \\ or space)");
     }
-    for (const ProbeDef& other : m.probes) {
-      if (other.name == p.name) f.fail("name", "'" + p.name + "' is used twice; names must differ");
-    }
     p.kind = probe_kind(f);
+    p.pairs = f.flag("pairs", false);
+    if (f.has("pairs") && p.kind != ProbeKind::Contact) f.fail("pairs", "only for type: contact");
+    check_file_names(f, p, m.probes);
     if (p.kind == ProbeKind::Point) {
       const MaterialPoint at = read_location(f, m);
       p.body = at.body;

@@ -78,6 +78,28 @@ nlohmann::json phases_json(const DeploymentPhases& p, const PhaseSettings& s) {
            "where a watched panel's bend exceeds the threshold"}};
 }
 
+// One CSV line of text cells (a header).
+std::string csv_line(const std::vector<std::string>& cells) {
+  std::string out;
+  for (std::size_t c = 0; c < cells.size(); ++c) out += (c ? "," : "") + cells[c];
+  return out + "\n";
+}
+
+// Numbers of one CSV row (12 significant digits), without the line end.
+std::string csv_numbers(const std::vector<double>& values) {
+  std::string out;
+  for (std::size_t c = 0; c < values.size(); ++c)
+    out += fmt::format("{}{:.12g}", c ? "," : "", values[c]);
+  return out;
+}
+
+// Writes one CSV file of the run and lists it in the report.
+void write_csv(const std::string& dir, const std::string& file, const std::string& text,
+               RunReport& report) {
+  write_file_atomically((fs::path(dir) / file).string(), text);
+  report.files.push_back(file);
+}
+
 // Runs an optional writer; a failure becomes a warning instead of losing the run.
 template <class F>
 void optional_output(RunReport& report, const std::string& file, F&& write) {
@@ -106,12 +128,25 @@ nlohmann::json model_counts(const Model& m) {
 }
 
 std::string probe_csv(const ProbeTable& t) {
-  std::string out;
-  for (std::size_t c = 0; c < t.columns.size(); ++c) out += (c ? "," : "") + t.columns[c];
-  out += "\n";
-  for (const auto& r : t.rows) {
-    for (std::size_t c = 0; c < r.size(); ++c) out += fmt::format("{}{:.12g}", c ? "," : "", r[c]);
-    out += "\n";
+  std::string out = csv_line(t.columns);
+  for (const auto& r : t.rows) out += csv_numbers(r) + "\n";
+  return out;
+}
+
+std::string pairs_file(const ProbeTable& t) {
+  return t.name + "_pairs.csv";
+}
+
+std::string pairs_csv(const ProbeTable& t, const Model& model) {
+  std::string out =
+      csv_line({t.columns[0], "body_a", "body_b", "points", "normal_force_N", "friction_force_N",
+                "max_penetration_m", "fx_b_N", "fy_b_N", "fz_b_N"});
+  for (const PairSample& s : t.pair_rows) {
+    const ContactPairForce& p = s.force;
+    out += fmt::format("{:.12g},{},{},", s.x, model.bodies[p.a].name, model.bodies[p.b].name);
+    out += csv_numbers({static_cast<double>(p.points), p.normal_force, p.friction_force,
+                        p.max_penetration, p.f_b_W.x(), p.f_b_W.y(), p.f_b_W.z()}) +
+           "\n";
   }
   return out;
 }
@@ -121,6 +156,10 @@ nlohmann::json probe_summary(const ProbeTable& t) {
                    {"file", t.name + ".csv"},
                    {"rows", t.rows.size()},
                    {"columns", t.columns}};
+  if (t.pairs) {
+    j["pairs_file"] = pairs_file(t);
+    j["pair_rows"] = t.pair_rows.size();
+  }
   if (t.rows.empty()) return j;
   const auto& last = t.rows.back();
   if (t.kind == ProbeKind::Point) {
@@ -149,8 +188,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   nlohmann::json probes = nlohmann::json::object();
   const ProbeTable* first_drive = nullptr;
   for (const ProbeTable& t : rec.tables()) {
-    write_file_atomically((fs::path(dir) / (t.name + ".csv")).string(), probe_csv(t));
-    report.files.push_back(t.name + ".csv");
+    write_csv(dir, t.name + ".csv", probe_csv(t), report);
+    if (t.pairs) write_csv(dir, pairs_file(t), pairs_csv(t, scene.model), report);
     probes[t.name] = probe_summary(t);
     if (t.kind == ProbeKind::Drive && !first_drive) first_drive = &t;
   }
@@ -163,8 +202,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
       csv += fmt::format("{:.12g},{},{:.12g}\n", p.displacement, p.active_contacts,
                          p.bend / kDegToRad);
     }
-    write_file_atomically((fs::path(dir) / "phases.csv").string(), csv);
-    report.files.push_back("phases.csv");
+    write_csv(dir, "phases.csv", csv, report);
   }
   const std::string title =
       scene.title.empty() ? fs::path(scene.file).stem().string() : scene.title;

@@ -1,6 +1,6 @@
 // Everything `finseg run` leaves in its output folder (docs/scene.md, "Run outputs"):
-// one CSV per probe, optional VTK frames, HTML page and force plots, and summary.json,
-// written last. Every file is written atomically.
+// one CSV per probe (and the per-pair contact forces on request), optional VTK frames, HTML
+// page and force plots, and summary.json, written last. Every file is written atomically.
 #pragma once
 
 #include <string>
@@ -20,8 +20,18 @@ nlohmann::json model_counts(const Model& model);
 /// CSV text of a probe table: header of unit-carrying names, one row per output.
 std::string probe_csv(const ProbeTable& table);
 
+/// Name of a contact probe's per-pair file: "<probe>_pairs.csv".
+std::string pairs_file(const ProbeTable& table);
+
+/// CSV text of a contact probe's pairs (table.pairs): the abscissa, body_a, body_b (names
+/// in `model`), points, normal_force_N, friction_force_N, max_penetration_m and
+/// fx_b_N, fy_b_N, fz_b_N (resultant contact force on body_b, world frame); one row per
+/// touching pair per output.
+std::string pairs_csv(const ProbeTable& table, const Model& model);
+
 /// Per-probe summary: file, type, rows, final (point: [x, y, z] m; others: last row by
-/// column name) and, for drive probes, peak_force_N and peak_displacement_m.
+/// column name), for drive probes peak_force_N and peak_displacement_m, for contact probes
+/// with pairs pairs_file and pair_rows.
 nlohmann::json probe_summary(const ProbeTable& table);
 
 /// What a finished (or diverged) run produced.
