@@ -42,22 +42,52 @@ TEST(ZigzagConditions, TableOneAnglesAndStiffness) {
   EXPECT_THROW(paper_condition(5), InputError);
 }
 
-// The target of the folded-strip examples. Known failure (docs/zigzag.md, "Status"): the
-// clipping of the strip's collinear side edges is ill-conditioned (the contact force jumps
-// under 1e-14 m pose changes), so the static solver stops at 11-22 mm of pull. Disabled until
-// the contact handles collinear edges and edge-on-edge crossings.
+// Runs condition n of Table 1 (default discretisation, contact on) and checks a full
+// deployment: whole travel, no NaN, penetration below a quarter of the thickness (the
+// criterion of the folded-panel contact test: mid-surfaces stay apart by most of the
+// thickness), phases in order.
+void expect_full_deployment(int n) {
+  const ZigzagSpec spec = paper_condition(n);
+  const Model m = build_zigzag_model(spec);
+  const PullResult r = run_pull_test(m, {1, 4}, 0.1);
+  ASSERT_EQ(r.stats.status, "ok") << "condition " << n << ": " << r.stats.message;
+  EXPECT_TRUE(r.all_finite);
+  EXPECT_NEAR(r.samples.back().displacement, m.drives[0].travel, 1e-12);
+  EXPECT_GT(r.max_penetration, 0) << "condition " << n << ": the panels never touched";
+  EXPECT_LT(r.max_penetration, 0.25 * spec.thickness);
+  EXPECT_LE(r.phases.initial_deformation, r.phases.contact);
+  EXPECT_LE(r.phases.contact, r.phases.bending);
+}
+
+// Condition 2 (80 deg, taped) pulls through with contact in under a second.
+TEST(ZigzagConditions, TapedEightyDegreeConditionDeploysWithContact) {
+  expect_full_deployment(2);
+}
+
+// The target of the folded-strip examples. Known failure (docs/zigzag.md, "Status"):
+// conditions 1 and 3 run through but take about 12 s each (several settles by dynamic
+// relaxation); condition 4 stops at 72.6 mm of the 142 mm travel. Disabled until all four run
+// through in the time a test may take.
 TEST(ZigzagConditions, DISABLED_AllFourConditionsDeployWithContact) {
-  for (int n = 1; n <= 4; ++n) {
-    const ZigzagSpec spec = paper_condition(n);
-    const Model m = build_zigzag_model(spec);
-    const PullResult r = run_pull_test(m, {1, 4}, 0.1);
-    ASSERT_EQ(r.stats.status, "ok") << "condition " << n << ": " << r.stats.message;
-    EXPECT_TRUE(r.all_finite);
-    EXPECT_NEAR(r.samples.back().displacement, m.drives[0].travel, 1e-12);
-    EXPECT_LT(r.max_penetration, spec.contact_settings.damping_depth);
-    EXPECT_LE(r.phases.initial_deformation, r.phases.contact);
-    EXPECT_LE(r.phases.contact, r.phases.bending);
-  }
+  for (int n = 1; n <= 4; ++n) expect_full_deployment(n);
+}
+
+// Mesh convergence of the discretisation without contact (the panels then pass through each
+// other, so this is the beam/crease discretisation alone): doubling the segments per panel
+// from 16 to 32 (cells refined 8:1 towards the creases) changes the peak pull force of
+// condition 1 by less than 2 %.
+TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithoutContact) {
+  auto peak = [](int segments) {
+    ZigzagSpec spec = paper_condition(1);
+    spec.contact = false;
+    spec.segments_per_panel = segments;
+    spec.crease_refinement = 8;
+    const PullResult r = run_pull_test(build_zigzag_model(spec), {1, 4}, 0.1);
+    EXPECT_EQ(r.stats.status, "ok") << r.stats.message;
+    return r.peak_force;
+  };
+  const double coarse = peak(16), fine = peak(32);
+  EXPECT_LT(std::abs(coarse - fine) / fine, 0.02) << coarse << " vs " << fine << " N";
 }
 
 }  // namespace
