@@ -18,5 +18,8 @@ echo "== ASan/UBSan build and tests"
 cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFINSEG_SANITIZE=ON \
   -DFINSEG_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" >/dev/null
 cmake --build build/asan -j"$jobs"
+# The four-condition pull (a minute in Release) is skipped here: under the sanitizers it would
+# take most of the CI budget; condition 2's pull and every other test run.
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir build/asan --output-on-failure -j"$jobs"
+  ctest --test-dir build/asan --output-on-failure -j"$jobs" \
+  -E "ZigzagConditions.AllFourConditionsDeployWithContact"

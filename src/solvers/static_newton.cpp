@@ -205,13 +205,17 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
   return false;
 }
 
+constexpr int kPathIterations = 12;  // Newton iterations per step along a drive path
+
 // Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
+// `dx` is the first increment tried and, on return, the last one that worked (so that the
+// next interval starts from it).
 template <class Setter>
 void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
-                  double a, double b, int initial_steps, Setter set, const char* what,
-                  BodyForces& f, SolverStats& stats) {
+                  double a, double b, double& dx, Setter set, const char* what, BodyForces& f,
+                  SolverStats& stats) {
   double x = a;
-  double dx = (b - a) / std::max(1, initial_steps);
+  dx = (b > a) ? std::min(dx, b - a) : std::max(dx, b - a);
   const double dx_min = std::abs(b - a) * 1e-6;
   constexpr double kJump = 1e-2;  // of the interval: how far past a limit point settle starts
   while ((b - x) * (b > a ? 1 : -1) > 1e-12 * std::abs(b - a)) {
@@ -268,8 +272,9 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   state.t = 0;
   compute_forces(model, state, f);
   if (!path) on_output(state, f);
+  double dlambda = lambda_end / std::max(1, settings.load_steps);
   continuation(
-      model, state, settings, fscale, 0.0, lambda_end, settings.load_steps,
+      model, state, settings, fscale, 0.0, lambda_end, dlambda,
       [&](State& s, double x) {
         s.load_scale = x;
         s.t = x;
@@ -287,11 +292,16 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   const int n = static_cast<int>(std::ceil(d0.travel / d0.step - 1e-9));
   state.t = 0;
   on_output(state, f);
+  // Along the pull Newton converges in a handful of iterations where it converges at all: a
+  // step that needs more is cut (cheaper than iterating on, and the cut steps converge fast).
+  SolverSettings path_settings = settings;
+  path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
+  double ds = d0.step;
   for (int k = 1; k <= n; ++k) {
     const double s_from = state.drive_s[0];
     const double s_to = std::min(d0.travel, k * d0.step);
     continuation(
-        model, state, settings, fscale, s_from, s_to, 1,
+        model, state, path_settings, fscale, s_from, s_to, ds,
         [&](State& s, double x) {
           for (size_t i = 0; i < model.drives.size(); ++i) {
             const DriveDef& d = model.drives[i];
