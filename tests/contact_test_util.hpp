@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "collision/contact_laws.hpp"
 #include "model/model.hpp"
 
 namespace finseg::test {
@@ -20,6 +21,22 @@ inline BodyDef plate(const std::string& name, double mass, const Vec3& size, con
   b.R0_WB = R;
   b.fixed = fixed;
   return b;
+}
+
+/// Contact switched on with the suggested normal and tangential values and elastic-anchor
+/// friction of coefficients mu_s, mu_d.
+inline ContactDef anchor_contact(const ContactSuggestion& sug, double mu_s, double mu_d) {
+  ContactDef c;
+  c.enabled = true;
+  c.stiffness = sug.stiffness;
+  c.damping = sug.damping;
+  c.damping_depth = sug.damping_depth;
+  c.friction = FrictionModel::Anchor;
+  c.mu_static = mu_s;
+  c.mu_dynamic = mu_d;
+  c.tangential_stiffness = sug.tangential_stiffness;
+  c.tangential_damping = sug.tangential_damping;
+  return c;
 }
 
 }  // namespace finseg::test

@@ -290,16 +290,8 @@ TEST(ContactDynamics, StackOfTenSheetsRestsWithPenetrationsOfTheWeightAbove) {
     mod.bodies.push_back(
         plate(fmt::format("sheet{}", i), m, Vec3(0.03, 0.02, kThick), Vec3(0, 0, i * kThick)));
   const ContactSuggestion sug = suggest_contact(m, kG, 1e-5);
-  ContactDef& c = mod.contact;
-  c.enabled = true;
-  c.stiffness = sug.stiffness;
-  c.damping = sug.damping;
-  c.damping_depth = sug.damping_depth;
-  c.friction = FrictionModel::Anchor;
-  c.mu_static = 0.4;
-  c.mu_dynamic = 0.3;
-  c.tangential_stiffness = sug.tangential_stiffness;
-  c.tangential_damping = sug.tangential_damping;
+  mod.contact = test::anchor_contact(sug, 0.4, 0.3);
+  const ContactDef& c = mod.contact;
   mod.finalize_dofs();
   State s = initial_state(mod);
   SolverSettings set;

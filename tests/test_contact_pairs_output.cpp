@@ -63,16 +63,7 @@ Scene plates_scene(double m, double P) {
   load.body = 1;
   load.force = Vec3(0, 0, -P);
   mod.loads.push_back(load);
-  ContactDef& c = mod.contact;
-  c.enabled = true;
-  c.stiffness = sug.stiffness;
-  c.damping = sug.damping;
-  c.damping_depth = sug.damping_depth;
-  c.friction = FrictionModel::Anchor;
-  c.mu_static = 0.5;
-  c.mu_dynamic = 0.4;
-  c.tangential_stiffness = sug.tangential_stiffness;
-  c.tangential_damping = sug.tangential_damping;
+  mod.contact = test::anchor_contact(sug, 0.5, 0.4);
   ProbeDef probe;
   probe.name = "touch";
   probe.kind = ProbeKind::Contact;
