@@ -25,8 +25,8 @@ enum class FrictionModel {
 };
 
 /// Contact between segments: off unless enabled. All values SI. K and the damping describe
-/// the contact of a whole face lying flat on another: the force is shared by the vertices of
-/// the overlap polygon (weights summing to 1, see docs/contact.md).
+/// the contact of a whole face lying flat on another: the force is shared by the plate's
+/// sample points (weights summing to 1, see docs/contact.md).
 struct ContactDef {
   bool enabled = false;
 
