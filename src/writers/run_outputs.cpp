@@ -63,7 +63,16 @@ std::vector<PlotMarker> phase_markers(const DeploymentPhases& p) {
     m.push_back({1e3 * p.initial_deformation, "initial deformation"});
   if (std::isfinite(p.contact)) m.push_back({1e3 * p.contact, "contact"});
   if (std::isfinite(p.bending)) m.push_back({1e3 * p.bending, "panel bending"});
-  return m;
+  // Phases that begin at the same output share one marker (their labels would overlap).
+  std::vector<PlotMarker> merged;
+  for (const PlotMarker& k : m) {
+    if (!merged.empty() && merged.back().x == k.x) {
+      merged.back().label += " + " + k.label;
+    } else {
+      merged.push_back(k);
+    }
+  }
+  return merged;
 }
 
 nlohmann::json phases_json(const DeploymentPhases& p, const PhaseSettings& s) {
