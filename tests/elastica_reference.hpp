@@ -96,4 +96,11 @@ inline double cantilever_beta_l(int n) {
   return 0.5 * (bracket.first + bracket.second);
 }
 
+/// Angular frequency of mode n of the Euler-Bernoulli cantilever of length L (m), bending
+/// rigidity EI (N m^2) and mass per length rho_A (kg/m), rad/s.
+inline double cantilever_omega(int n, double L, double EI, double rho_A) {
+  const double bl = cantilever_beta_l(n);
+  return bl * bl / (L * L) * std::sqrt(EI / rho_A);
+}
+
 }  // namespace finseg::reference

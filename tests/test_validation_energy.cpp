@@ -23,10 +23,9 @@ CantileverSpec strip() {
 }
 
 double first_period(const CantileverSpec& s) {
-  const double bl = reference::cantilever_beta_l(1);
-  const double omega = bl * bl / (s.length * s.length) *
-                       std::sqrt(bending_rigidity(s) / (s.density * s.width * s.thickness));
-  return 2 * std::numbers::pi / omega;
+  return 2 * std::numbers::pi /
+         reference::cantilever_omega(1, s.length, bending_rigidity(s),
+                                     s.density * s.width * s.thickness);
 }
 
 // Total energy (kinetic + elastic) at every output of a free run released from the

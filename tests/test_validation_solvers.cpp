@@ -22,9 +22,8 @@ CantileverSpec stocky_strip() {
 
 // First bending angular frequency from beam theory, rad/s.
 double omega1(const CantileverSpec& s) {
-  const double bl = reference::cantilever_beta_l(1);
-  return bl * bl / (s.length * s.length) *
-         std::sqrt(bending_rigidity(s) / (s.density * s.width * s.thickness));
+  return reference::cantilever_omega(1, s.length, bending_rigidity(s),
+                                     s.density * s.width * s.thickness);
 }
 
 // Tip after a damped run from the flat state; damping ratio zeta1 of the first mode.
