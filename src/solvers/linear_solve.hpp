@@ -1,4 +1,5 @@
-// Sparse linear solves for the Newton iterations (Eigen's SparseLU with COLAMD ordering).
+// Sparse linear solves for the Newton iterations (Eigen's SparseLU with COLAMD ordering; the
+// ordering and the factor storage are kept between solves of one sparsity pattern).
 #pragma once
 
 #include <Eigen/SparseCore>
