@@ -121,8 +121,8 @@ class Assembler {
       k.w_W[r] = seed_v ? AD(state_.w_W[i][r], N, iw) : AD(state_.w_W[i][r], D::Zero());
     }
     // First order in dphi is all a Jacobian needs: R = (I + [dphi]x) R0.
-    const Mat3T<AD> R0 = state_.R_WB[i].cast<AD>();
-    k.R_WB = R0 + hat(dphi) * R0;
+    const Mat3& R0 = state_.R_WB[i];
+    k.R_WB = R0.cast<AD>() + hat(dphi) * R0;
     return k;
   }
 

@@ -53,8 +53,8 @@ Vec3T<T> fold_angle_gradient(const Mat3T<T>& R_WE, const Mat3T<T>& R_WF) {
 template <class T>
 T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHistory& hist, double t,
                  const BodyKin<T>& A, const BodyKin<T>& B, Wrench<T>& on_A, Wrench<T>& on_B) {
-  const Mat3T<T> R_WE = A.R_WB * e.R_inner_E.cast<T>();
-  const Mat3T<T> R_WF = B.R_WB * e.R_outer_F.cast<T>();
+  const Mat3T<T> R_WE = A.R_WB * e.R_inner_E;
+  const Mat3T<T> R_WF = B.R_WB * e.R_outer_F;
   const Vec3T<T> Pp = A.point_W(e.c_inner_B), Pm = B.point_W(e.c_outer_B);
   const Vec3T<T> z_F = R_WF.transpose() * (Pp - Pm) - e.z0_F.cast<T>();
   const Vec3T<T> zdot_F =

@@ -20,8 +20,8 @@ struct BodyKin {
   Vec3T<T> v_W;
   Vec3T<T> w_W;
 
-  Vec3T<T> point_W(const Vec3& r_B) const { return p_W + R_WB * r_B.cast<T>(); }
-  Vec3T<T> point_velocity_W(const Vec3& r_B) const { return v_W + w_W.cross(R_WB * r_B.cast<T>()); }
+  Vec3T<T> point_W(const Vec3& r_B) const { return p_W + R_WB * r_B; }
+  Vec3T<T> point_velocity_W(const Vec3& r_B) const { return v_W + w_W.cross(Vec3T<T>(R_WB * r_B)); }
 };
 
 /// Resultant force and moment about the body centroid, world frame.
