@@ -37,11 +37,9 @@ PullSample sample(const Model& m, const State& s, const BodyForces& f,
 PullResult run_pull_test(const Model& model, const std::vector<int>& watched_panels,
                          double bend_threshold, const SolverSettings& settings) {
   if (model.drives.empty()) throw InputError(model.source, "drives", "a pull test needs a drive");
-  SolverSettings set = settings;
-  set.kind = SolverKind::Static;
   PullResult r;
   State st = initial_state(model);
-  r.stats = run_solver(model, st, set, [&](const State& s, const BodyForces& f) {
+  r.stats = run_solver(model, st, settings, [&](const State& s, const BodyForces& f) {
     r.samples.push_back(sample(model, s, f, watched_panels));
   });
   std::vector<PhaseSample> phase_samples;

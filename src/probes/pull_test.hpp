@@ -1,5 +1,5 @@
-// A quasi-static pull test run to its end with what the zigzag examples, tests and
-// benchmarks record at each equilibrium: gauge force, contact, panel bending, phases.
+// A pull test run to its end with what the zigzag examples, tests and benchmarks record at
+// each output: gauge force, contact, panel bending, phases.
 #pragma once
 
 #include <vector>
@@ -10,7 +10,7 @@
 
 namespace finseg {
 
-/// One recorded equilibrium of a pull test.
+/// One recorded output (an equilibrium for the static solver) of a pull test.
 struct PullSample {
   double displacement = 0;  ///< drive 0's displacement (the slide), m
   double force = 0;         ///< gauge force along the pull direction, N
@@ -31,9 +31,10 @@ struct PullResult {
   bool all_finite = true;
 };
 
-/// Runs the static solver along drive 0 of `model` (which must have one) and records every
-/// equilibrium. `watched_panels` (0-based) are the panels whose bending marks phase 3;
-/// `bend_threshold` in rad (detect_phases).
+/// Pulls along drive 0 of `model` (which must have one) and records every output: with the
+/// static solver (the default) one equilibrium per drive step; with a dynamic solver a pull
+/// at the drive's speed up to settings.t_end. `watched_panels` (0-based) are the panels whose
+/// bending marks phase 3; `bend_threshold` in rad (detect_phases).
 PullResult run_pull_test(const Model& model, const std::vector<int>& watched_panels,
                          double bend_threshold, const SolverSettings& settings = {});
 
