@@ -60,12 +60,20 @@ double dead_moment_work(const Model& model, const State& state, const Eigen::Vec
   return w;
 }
 
-// Newton from the current state at the current load scale and drive positions.
+// A Newton solve that has not reduced the residual by this factor after `stall_iteration`
+// iterations is outside its region of quadratic convergence (the increment crosses a contact
+// or friction transition, or is simply too long): along a drive path it is cheaper, and keeps
+// to the path the slow pull follows, to give it up and cut the increment.
+constexpr double kStallDrop = 0.03;
+
+// Newton from the current state at the current load scale and drive positions; with
+// stall_iteration > 0 it gives up when stalled (kStallDrop).
 bool solve_equilibrium(const Model& model, State& state, const SolverSettings& settings,
-                       double fscale, BodyForces& f, SolverStats& stats) {
+                       double fscale, BodyForces& f, SolverStats& stats, int stall_iteration = 0) {
   ForceJacobian jac;
   jac.with_velocity = false;  // statics needs d(force)/d(pose) only
   const double L = std::max(model.sheet.length, 1e-3);
+  double r_start = 0;
   for (int it = 0; it < settings.max_iterations; ++it) {
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
@@ -74,6 +82,8 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     const double r0 = residual_norm(model, f);
     if (!std::isfinite(r0)) return false;
     if (r0 <= settings.tolerance * fscale) return true;
+    if (it == 0) r_start = r0;
+    if (stall_iteration > 0 && it >= stall_iteration && r0 > kStallDrop * r_start) return false;
     const Eigen::VectorXd g = generalized_forces(model, f);
     Eigen::SparseMatrix<double> K = -jac.dq;
     Eigen::VectorXd dq;
@@ -175,7 +185,7 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
 // against it, i.e. at each peak of the kinetic energy), in pseudo-time steps h that grow on
 // success, until Newton converges from where it has arrived.
 bool settle(const Model& model, State& state, const SolverSettings& settings, double fscale,
-            BodyForces& f, SolverStats& stats) {
+            BodyForces& f, SolverStats& stats, int stall_iteration) {
   const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
   constexpr double kFirstStep = 1e-4, kNewtonStep = 1.0, kSmallestStep = 1e-9;  // s
   constexpr int kMaxSteps = 1000;
@@ -185,7 +195,7 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
     const State base = state;
     if (h >= kNewtonStep) {
       // Once the pseudo step is this long the mass term no longer matters: finish with Newton.
-      if (solve_equilibrium(model, state, settings, fscale, f, stats)) return true;
+      if (solve_equilibrium(model, state, settings, fscale, f, stats, stall_iteration)) return true;
       state = base;
       h = 0.25 * kNewtonStep;
       continue;
@@ -206,14 +216,15 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
 }
 
 constexpr int kPathIterations = 12;  // Newton iterations per step along a drive path
+constexpr int kPathStallIteration = 4;
 
 // Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
 // `dx` is the first increment tried and, on return, the last one that worked (so that the
-// next interval starts from it).
+// next interval starts from it). `stall_iteration` as for solve_equilibrium.
 template <class Setter>
 void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
                   double a, double b, double& dx, Setter set, const char* what, BodyForces& f,
-                  SolverStats& stats) {
+                  SolverStats& stats, int stall_iteration = 0) {
   double x = a;
   dx = (b > a) ? std::min(dx, b - a) : std::max(dx, b - a);
   const double dx_min = std::abs(b - a) * 1e-6;
@@ -222,7 +233,8 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
     const double x_try = (b > a) ? std::min(b, x + dx) : std::max(b, x + dx);
     const State start = state;
     set(state, x_try);
-    if (solve_equilibrium(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
+    if (solve_equilibrium(model, state, settings, fscale, f, stats, stall_iteration) &&
+        !tunnelled(model, state)) {
       // Every equilibrium on the path is history: crease openings, friction anchors and
       // the side each contact point is on follow the path, not only the output points.
       commit_history(model, state);
@@ -240,7 +252,8 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
       const double x_jump =
           (b > a) ? std::min(b, x + kJump * (b - a)) : std::max(b, x + kJump * (b - a));
       set(state, x_jump);
-      if (settle(model, state, settings, fscale, f, stats) && !tunnelled(model, state)) {
+      if (settle(model, state, settings, fscale, f, stats, stall_iteration) &&
+          !tunnelled(model, state)) {
         commit_history(model, state);
         ++stats.settles;
         x = x_jump;
@@ -293,7 +306,9 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   state.t = 0;
   on_output(state, f);
   // Along the pull Newton converges in a handful of iterations where it converges at all: a
-  // step that needs more is cut (cheaper than iterating on, and the cut steps converge fast).
+  // step that needs more, or stalls, is cut (cheaper than iterating on, and the cut steps
+  // converge fast). Long Newton runs also wander onto other branches than the slow pull's
+  // (docs/zigzag.md, "Status").
   SolverSettings path_settings = settings;
   path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
   double ds = d0.step;
@@ -309,7 +324,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
           }
           s.t = x;
         },
-        "drive displacement", f, stats);
+        "drive displacement", f, stats, kPathStallIteration);
     commit_history(model, state);
     ++stats.steps;
     on_output(state, f);
