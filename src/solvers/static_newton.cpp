@@ -201,9 +201,14 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
       continue;
     }
     if (relaxation_step(model, state, M, h, v, settings, f, stats, moved)) {
-      commit_history(model, state);  // the settling path is history too (sides, anchors)
-      if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
+      // The settling path is history too (sides, anchors), with its pseudo-velocities: a
+      // contact point sliding through the snap stays sliding, as in a dynamic pull, instead
+      // of re-sticking at every pseudo step (the statics' velocities are zero).
       v = moved / h;
+      set_velocity(model, state, v);
+      commit_history(model, state);
+      set_velocity(model, state, Eigen::VectorXd::Zero(model.num_dofs));
+      if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
       if (generalized_forces(model, f).dot(v) < 0) v.setZero();
       h *= 2;
     } else {
