@@ -59,19 +59,11 @@ double expect_full_deployment(int n, double max_penetration) {
   return r.max_penetration;
 }
 
-// Condition 2 (80 deg, taped) pulls through with contact in about a second; its panels stay
-// apart by most of the thickness (the criterion of the folded-panel contact test).
-TEST(ZigzagConditions, TapedEightyDegreeConditionDeploysWithContact) {
-  expect_full_deployment(2, 0.25 * paper_condition(2).thickness);
-}
-
-// All four conditions of Table 1 pull through with contact (about 25 s in all: conditions
-// 3 and 4 pass many snaps by dynamic relaxation). Penetration is bounded by the static solver's
-// tunnelling guard (half the thickness; a corner or edge sample carrying a crease's push sinks
-// deeper than a face: 47 um measured), so it is not asserted here. The ASan stage of
-// scripts/test.sh skips this test by name; condition 2 above runs there.
+// All four conditions of Table 1 pull through with contact (about 3 s in all), the panels
+// staying apart by most of the thickness (the criterion of the folded-panel contact test;
+// measured 5.6 / 10.7 / 8.0 / 15.6 um for conditions 1-4).
 TEST(ZigzagConditions, AllFourConditionsDeployWithContact) {
-  for (int n = 1; n <= 4; ++n) expect_full_deployment(n, INFINITY);
+  for (int n = 1; n <= 4; ++n) expect_full_deployment(n, 0.25 * paper_condition(n).thickness);
 }
 
 // Pulls `m` with the implicit solver at 10 mm/s, one output per drive step (the slow crank).
@@ -115,7 +107,7 @@ TEST(ZigzagConditions, StaticPullMatchesSlowDynamicPull) {
 // Mesh convergence with contact (the criterion): doubling the segments per panel from
 // 16 to 32 (8:1 refinement towards the creases) changes condition 2's peak pull force by less
 // than 2 % in the slow dynamic pull (the static solver does not pass the 16-segment strip's
-// later snaps). Release only, like the four-condition test (about 6 s).
+// later snaps). Release only (about 6 s; a minute under the sanitizers).
 TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithContact) {
   const PullResult coarse = slow_dynamic_pull(build_zigzag_model(condition_two_first_40mm(16, 8)));
   const PullResult fine = slow_dynamic_pull(build_zigzag_model(condition_two_first_40mm(32, 8)));
