@@ -123,15 +123,12 @@ class Assembler {
     // of multiplied in autodiff (a tenth of the Jacobian's cost).
     const Mat3& R0 = state_.R_WB[i];
     for (int j = 0; j < 3; ++j) {
-      for (int row = 0; row < 3; ++row) {
-        D d = D::Zero();
-        if (free) {
-          for (int r = 0; r < 3; ++r) {
-            d[6 * slot + 3 + r] = Vec3::Unit(r).cross(R0.col(j))[row];
-          }
-        }
-        k.R_WB(row, j) = AD(R0(row, j), d);
+      D d[3] = {D::Zero(), D::Zero(), D::Zero()};  // rows of column j
+      for (int r = 0; free && r < 3; ++r) {
+        const Vec3 dcol = Vec3::Unit(r).cross(R0.col(j));
+        for (int row = 0; row < 3; ++row) d[row][6 * slot + 3 + r] = dcol[row];
       }
+      for (int row = 0; row < 3; ++row) k.R_WB(row, j) = AD(R0(row, j), d[row]);
     }
     return k;
   }
