@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   finseg::cli::register_modes(app);
   finseg::cli::register_identify(app);
   finseg::cli::register_compare(app);
+  finseg::cli::register_pattern(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

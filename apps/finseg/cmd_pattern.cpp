@@ -1,0 +1,111 @@
+// finseg pattern check|info FILE [--unit U]: validates a FOLD crease pattern (docs/fold.md)
+// and prints its counts; finseg pattern zigzag ... [--out FILE]: writes the zigzag strip's
+// crease pattern as FOLD (stdout or FILE, atomically).
+#include <fmt/format.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "apps/finseg/commands.hpp"
+#include "core/error.hpp"
+#include "core/text.hpp"
+#include "patterns/fold_format.hpp"
+#include "patterns/zigzag_pattern.hpp"
+
+namespace finseg::cli {
+
+namespace {
+
+struct ReadOptions {
+  std::string file, unit;
+};
+
+std::optional<double> unit_scale(const std::string& unit) {
+  if (unit.empty()) return std::nullopt;
+  if (const auto m = metres_per_fold_unit(unit)) return m;
+  const double v = parse_number(unit, "<cli>", "--unit");
+  require_positive(v, "<cli>", "--unit", "m per unit");
+  return v;
+}
+
+void print_counts(const std::string& file, const CreasePattern& p) {
+  std::map<char, int> count;
+  for (const PatternEdge& e : p.edges) ++count[static_cast<char>(e.assignment)];
+  std::string kinds;
+  for (const auto& [letter, n] : count)
+    kinds += fmt::format("{}{} {}", kinds.empty() ? "" : ", ", n, letter);
+  fmt::print("{}: valid: {} vertices, {} faces, {} edges ({}){}\n", file, p.vertices_flat_m.size(),
+             p.faces.size(), p.edges.size(), kinds,
+             p.vertices_folded_m.empty() ? "" : ", folded coordinates");
+}
+
+void print_info(const CreasePattern& p) {
+  Eigen::AlignedBox2d box;
+  for (const Vec2& v : p.vertices_flat_m) box.extend(v);
+  std::size_t min_sides = SIZE_MAX, max_sides = 0;
+  for (const auto& f : p.faces) {
+    min_sides = std::min(min_sides, f.size());
+    max_sides = std::max(max_sides, f.size());
+  }
+  fmt::print("  FOLD {} by '{}', title '{}'\n", p.meta.file_spec, p.meta.file_creator,
+             p.meta.frame_title);
+  fmt::print("  flat extent {:.6g} x {:.6g} m, faces of {}..{} sides\n", box.sizes().x(),
+             box.sizes().y(), min_sides, max_sides);
+  if (!p.has_fold_angles) return fmt::print("  no fold angles\n");
+  double lo = 0, hi = 0;
+  for (const PatternEdge& e : p.edges) {
+    lo = std::min(lo, e.fold_angle);
+    hi = std::max(hi, e.fold_angle);
+  }
+  fmt::print("  fold angles {:.6g} .. {:.6g} deg (valley positive)\n", lo / kDegToRad,
+             hi / kDegToRad);
+}
+
+void register_read(CLI::App* pattern, const char* name, const char* what, bool info) {
+  auto o = std::make_shared<ReadOptions>();
+  CLI::App* c = pattern->add_subcommand(name, what);
+  c->add_option("file", o->file, "FOLD file")->required();
+  c->add_option("--unit", o->unit,
+                "length of one unit of a unitless file: m, cm, mm, um, nm, in, pt or metres");
+  c->callback([o, info] {
+    const CreasePattern p = read_fold(o->file, unit_scale(o->unit));
+    print_counts(o->file, p);
+    if (info) print_info(p);
+  });
+}
+
+void register_zigzag(CLI::App* pattern) {
+  auto spec = std::make_shared<ZigzagSpec>();
+  auto deg = std::make_shared<double>(80);
+  auto out = std::make_shared<std::string>();
+  CLI::App* c = pattern->add_subcommand("zigzag", "the zigzag strip's crease pattern as FOLD");
+  c->add_option("--length", spec->length, "whole strip, m");
+  c->add_option("--width", spec->width, "m");
+  c->add_option("--panels", spec->panels, "number of panels");
+  c->add_option("--fold-angle", *deg, "angle panel/horizontal, deg");
+  c->add_option("--pattern", spec->pattern, "P/V per crease, e.g. PVPVP (default: alternate)");
+  c->add_option("--out", *out, "write the FOLD file to FILE instead of standard output");
+  c->callback([spec, deg, out] {
+    spec->fold_angle = *deg * kDegToRad;
+    spec->fixed_panels = {1};  // the pull test is not part of the pattern: any valid values
+    spec->pulled_crease = 1;
+    validate(*spec, "<cli>");
+    const CreasePattern p = zigzag_crease_pattern(*spec);
+    if (out->empty()) return fmt::print("{}", fold_text(p));
+    write_fold(*out, p);
+    fmt::print(stderr, "wrote {}\n", *out);
+  });
+}
+
+}  // namespace
+
+void register_pattern(CLI::App& app) {
+  CLI::App* pattern = app.add_subcommand("pattern", "read, check and write FOLD crease patterns");
+  pattern->require_subcommand(1);
+  register_read(pattern, "check", "validate a FOLD file and print its counts", false);
+  register_read(pattern, "info", "check, then print extent, face sizes and fold angles", true);
+  register_zigzag(pattern);
+}
+
+}  // namespace finseg::cli
