@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pattern_test_util.hpp"
+#include "patterns/grid_pattern.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/zigzag_pattern.hpp"
 
@@ -51,27 +52,6 @@ CreasePattern miura(int rows, int cols, double w, double h, double t) {
     for (int j = 0; j <= cols; ++j) {
       p.edges.push_back(make_edge(id(i, j), id(i + 1, j),
                                   j == 0 || j == cols ? EdgeAssignment::Boundary : column(j)));
-    }
-  }
-  return p;
-}
-
-// n x n unit squares (m), interior edges F.
-CreasePattern grid(int n) {
-  CreasePattern p;
-  auto id = [&](int i, int j) { return i * (n + 1) + j; };
-  for (int i = 0; i <= n; ++i) {
-    for (int j = 0; j <= n; ++j) p.vertices_flat_m.emplace_back(j, i);
-  }
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j)
-      p.faces.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)});
-  }
-  for (int i = 0; i <= n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const auto kind = i == 0 || i == n ? EdgeAssignment::Boundary : EdgeAssignment::Flat;
-      p.edges.push_back(make_edge(id(i, j), id(i, j + 1), kind));
-      p.edges.push_back(make_edge(id(j, i), id(j + 1, i), kind));
     }
   }
   return p;
@@ -225,8 +205,10 @@ TEST(FoldPatterns, CrossingSearchMatchesBruteForce) {
 
 TEST(FoldPatterns, LargeGridValidatesAndFindsOneAddedCrossing) {
   const int n = 300;
-  CreasePattern p = grid(n);
+  CreasePattern p = grid_crease_pattern(n, n, 1.0, 1.0);
   ASSERT_EQ(p.edges.size(), static_cast<std::size_t>(2 * n * (n + 1)));
+  for (const PatternEdge& e : p.edges)
+    EXPECT_EQ(e.face_count(), e.assignment == EdgeAssignment::Boundary ? 1 : 2);
   EXPECT_NO_THROW(validate_pattern(p, "<grid>"));
   // A long edge across the sheet: the first edge it meets, by brute force.
   const int a = static_cast<int>(p.vertices_flat_m.size());

@@ -100,6 +100,14 @@ TEST_F(FoldRefusal, NonPlanarFoldedFace) {
 TEST_F(FoldRefusal, NonConvexFace) {
   f["vertices_coords"][4] = json::array({0.4, 0.4});
   refused("faces_vertices[0]", "not convex at vertex 4");
+  const json spike = {{"frame_unit", "m"},
+                      {"vertices_coords", {{0, 0}, {2, 0}, {1, 0}, {1, 1}}},
+                      {"faces_vertices", {{0, 1, 2, 3}}}};
+  expect_refused(dir, spike, "faces_vertices[0]", "not convex at vertex 1");
+  const json star = {{"frame_unit", "m"},
+                     {"vertices_coords", {{0, 0}, {2, 0}, {0.5, 1.5}, {1, -0.5}, {1.5, 1.5}}},
+                     {"faces_vertices", {{0, 1, 2, 3, 4}}}};
+  expect_refused(dir, star, "faces_vertices[0]", "winds around more than once");
 }
 
 TEST_F(FoldRefusal, ZeroAreaAndClockwiseFaces) {

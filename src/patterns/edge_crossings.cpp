@@ -10,10 +10,6 @@
 namespace finseg {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double len2 = ab.squaredNorm();
@@ -33,8 +29,8 @@ bool edges_meet(const std::vector<Vec2>& xy, const PatternEdge& e1, const Patter
            point_segment_distance(xy[q], xy[v], xy[p]) <= touch;
   }
   const Vec2 &A = xy[a], &B = xy[b], &C = xy[c], &D = xy[d];
-  const double o1 = cross(B - A, C - A), o2 = cross(B - A, D - A);
-  const double o3 = cross(D - C, A - C), o4 = cross(D - C, B - C);
+  const double o1 = cross2d(B - A, C - A), o2 = cross2d(B - A, D - A);
+  const double o3 = cross2d(D - C, A - C), o4 = cross2d(D - C, B - C);
   if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) {
     return true;
   }

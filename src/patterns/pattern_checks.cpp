@@ -107,10 +107,6 @@ double diameter(const std::vector<Vec2>& xy, const std::vector<int>& loop) {
   return d;
 }
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 void check_face_shape(const CreasePattern& p, std::size_t f, const PatternTolerances& tol,
                       const std::string& src) {
   const std::vector<Vec2>& xy = p.vertices_flat_m;
@@ -118,7 +114,7 @@ void check_face_shape(const CreasePattern& p, std::size_t f, const PatternTolera
   const std::size_t n = loop.size();
   const double d = diameter(xy, loop);
   double area2 = 0, turning = 0;
-  for (std::size_t i = 0; i < n; ++i) area2 += cross(xy[loop[i]], xy[loop[(i + 1) % n]]);
+  for (std::size_t i = 0; i < n; ++i) area2 += cross2d(xy[loop[i]], xy[loop[(i + 1) % n]]);
   const std::string field = at("faces_vertices", f);
   if (std::abs(area2) <= 2 * tol.area * d * d) {
     throw InputError(src, field, fmt::format("zero area (diameter {:.6g} m)", d));
@@ -127,8 +123,8 @@ void check_face_shape(const CreasePattern& p, std::size_t f, const PatternTolera
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 a = xy[loop[(i + 1) % n]] - xy[loop[i]];
     const Vec2 b = xy[loop[(i + 2) % n]] - xy[loop[(i + 1) % n]];
-    const double s = cross(a, b);
-    if (s < -tol.convexity * a.norm() * b.norm()) {
+    const double s = cross2d(a, b), straight = tol.convexity * a.norm() * b.norm();
+    if (s < -straight || (s <= straight && a.dot(b) < 0)) {  // reflex, or turning back
       throw InputError(src, field,
                        fmt::format("not convex at vertex {} (the segments need convex faces)",
                                    loop[(i + 1) % n]));
