@@ -2,6 +2,7 @@
 // fold-angle sign convention on a hand-folded pair of squares, and the crossing search on a
 // large grid against brute force.
 #include <cmath>
+#include <numeric>
 
 #include "pattern_test_util.hpp"
 #include "patterns/grid_pattern.hpp"
@@ -167,11 +168,11 @@ bool crosses(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
 }
 
 TEST(FoldPatterns, CrossingSearchMatchesBruteForce) {
-  // 400 segments with quasi-random ends (golden-ratio sequences): many crossings.
+  // 250 segments with quasi-random ends (golden-ratio sequences): many crossings.
   std::vector<Vec2> xy;
   std::vector<PatternEdge> edges;
   const double g1 = 0.6180339887498949, g2 = 0.7548776662466927, g3 = 0.5698402909980532;
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < 250; ++i) {
     const Vec2 a(std::fmod(i * g1, 1.0) * 4, std::fmod(i * g2, 1.0) * 4);
     const double ang = std::fmod(i * g3, 1.0) * 2 * kPi, len = 0.05 + std::fmod(i * g1 * g2, 1.0);
     xy.push_back(a);
@@ -180,8 +181,8 @@ TEST(FoldPatterns, CrossingSearchMatchesBruteForce) {
   }
   // Find the first crossing, drop its second edge, repeat until none is left: every answer
   // on the way must be the brute force's.
-  std::vector<int> alive(400);
-  for (int i = 0; i < 400; ++i) alive[i] = i;
+  std::vector<int> alive(250);
+  std::iota(alive.begin(), alive.end(), 0);
   int found = 0;
   for (;;) {
     std::vector<PatternEdge> sub;
