@@ -77,6 +77,12 @@ TEST_F(FoldRefusal, IndicesOutOfRange) {
   f = two_squares();
   f["edges_vertices"][6] = json::array({1, 6});
   refused("edges_vertices[6]", "vertex 6 out of range");
+  f = two_squares();
+  f["edges_vertices"][6] = json::array({4, 4});
+  refused("edges_vertices[6]", "both ends are vertex 4");
+  f = two_squares();
+  f["faces_vertices"] = json::array();
+  refused("faces_vertices", "no faces");
 }
 
 TEST_F(FoldRefusal, DegenerateFaceLoops) {
@@ -165,6 +171,13 @@ TEST_F(FoldRefusal, AssignmentAgainstAdjacency) {
   f = two_squares();
   f["edges_assignment"][3] = "J";
   refused("edges_assignment[3]", "'J' (join) needs a face on each side");
+  for (const char* allowed : {"C", "J", "F", "U"}) {  // interior letters with angle 0
+    f = two_squares();
+    f["edges_assignment"][6] = allowed;
+    f["edges_foldAngle"][6] = 0;
+    spit(dir / "good.fold", f.dump());
+    EXPECT_NO_THROW(read_fold(dir / "good.fold")) << allowed;
+  }
 }
 
 TEST_F(FoldRefusal, UnknownAssignmentLetter) {
