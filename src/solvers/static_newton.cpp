@@ -139,11 +139,15 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
 }
 
 // A Newton step may carry a plate through another before their contact switches on; the
-// equilibrium found then holds them interpenetrating. Plates overlapping by more than half the
-// sheet's thickness are taken as such and the increment is cut.
+// equilibrium found then holds them interpenetrating. Two plates overlapping by more than half
+// the thinner one's thickness are taken as such and the increment is cut.
 bool tunnelled(const Model& model, const State& state) {
   if (!model.contact.enabled) return false;
-  return contact_summary(model, state).max_penetration > 0.5 * model.sheet.thickness;
+  for (const ContactPairForce& p : contact_summary(model, state).pairs) {
+    const double thinner = std::min(model.bodies[p.a].size.z(), model.bodies[p.b].size.z());
+    if (p.max_penetration > 0.5 * thinner) return true;
+  }
+  return false;
 }
 
 // One pseudo-time step of dynamic relaxation from the current poses q_n with velocity v
@@ -288,6 +292,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   const double lambda_end = state.load_scale;
   state.load_scale = 0;
   state.t = 0;
+  commit_history(model, state);  // the unloaded start is a state the structure is in
   compute_forces(model, state, f);
   if (!path) on_output(state, f);
   double dlambda = lambda_end / std::max(1, settings.load_steps);
