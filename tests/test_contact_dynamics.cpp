@@ -320,8 +320,8 @@ SetDownResult set_down(const SetDown& c) {
   set.t_end = c.t_end;
   set.output_interval = 0.5 * c.t_end;
   // Explicit: the damped rocking modes of the plate on its nine contact points need a step
-  // of a few hundredths of the contact period.
-  set.dt = c.kind == SolverKind::Explicit ? 0.03 * sug.period : 0;
+  // of a twentieth of the contact period.
+  set.dt = c.kind == SolverKind::Explicit ? 0.05 * sug.period : 0;
   set.dt_max = 1e-2;
   Vec3 p_half = p0, v_half = Vec3::Zero();
   double t_half = -1;
