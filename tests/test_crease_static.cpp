@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/so3.hpp"
 #include "elements/assemble.hpp"
@@ -231,6 +232,59 @@ TEST(CreaseStatic, TwoPanelsPulledOpenFollowClosedForm) {
   EXPECT_NEAR(st.drive_s[0], drive.travel, 1e-15);
   RecordProperty("worst_relative_force_error", std::to_string(worst));
   std::printf("two panels: %d states, worst |F/F_ref - 1| = %.3g\n", checked, worst);
+}
+
+// A flap with a softening stretch in its crease law (moment falling from 60 to 80 deg) opened
+// by a soft drive at its tip snaps from 62.6 to 75.9 deg, which the static solver passes by
+// settling (pseudo-time dynamic relaxation). The settling steps are not states the flap
+// passes through: the crease, marked opened above 76.5 deg, must stay unopened, as every
+// committed equilibrium is below that.
+TEST(CreaseStatic, SettleDoesNotOpenTheCrease) {
+  CreaseData d;
+  d.source = "snap";
+  CreaseCurve c;
+  const std::vector<double> deg{30, 45, 60, 70, 80, 95, 110, 140};
+  const std::vector<double> moment{0.5, 0.8, 1.0, 0.9, 0.8, 1.0, 1.5, 2.5};  // mN m
+  for (size_t i = 0; i < deg.size(); ++i) {
+    c.angle_deg.push_back(deg[i]);
+    c.moment.push_back(moment[i] * 1e-3);
+  }
+  d.curves = {c};
+  MeasuredLawOptions o;
+  o.rule.opened_above = 76.5 * kDegToRad;
+  const auto law = std::make_shared<MeasuredCreaseLaw>(d, o);
+  const double a = 0.05, fold0 = kPi - 40 * kDegToRad;
+  Model m = flap_model(law, fold0, a, 0.04, 0.0);
+  m.loads.clear();
+  DriveDef drive;  // the tip pulled along its initial opening direction through a soft gauge
+  drive.body = 1;
+  drive.point_B = Vec3(a / 2, 0, 0);
+  drive.start_W = m.bodies[1].p0_W + m.bodies[1].R0_WB * drive.point_B;
+  drive.direction_W = -Vec3::UnitY().cross(m.bodies[1].R0_WB * Vec3::UnitX()).normalized();
+  drive.stiffness = 0.1;  // N/m: softer than the crease's softening at the tip
+  drive.travel = 0.24;
+  drive.step = 0.005;
+  m.drives.push_back(drive);
+  m.finalize_dofs();
+  State st = initial_state(m);
+  SolverSettings set;
+  set.kind = SolverKind::Static;
+  double theta_max = 0, jump = 0, theta_prev = 0;
+  bool opened_on_path = false;
+  const SolverStats stats = run_solver(m, st, set, [&](const State& x, const BodyForces&) {
+    const double alpha = fold_angle<double>(x.R_WB[1], x.R_WB[0], x.history[0].fold_angle);
+    const double theta = (kPi - alpha) / kDegToRad;
+    if (x.t > 0) jump = std::max(jump, theta - theta_prev);
+    theta_prev = theta;
+    theta_max = std::max(theta_max, theta);
+    opened_on_path = opened_on_path || x.history[0].opened;
+  });
+  ASSERT_EQ(stats.status, "ok") << stats.message;
+  EXPECT_GE(stats.settles, 1);
+  EXPECT_GT(jump, 10);  // the snap
+  EXPECT_LT(theta_max, 76.5);
+  EXPECT_FALSE(opened_on_path);
+  EXPECT_FALSE(st.history[0].opened);
 }
 
 }  // namespace
