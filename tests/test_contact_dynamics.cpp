@@ -345,7 +345,7 @@ const double kCone = std::atan(0.5);  // atan(mu_s)
 // explicit solver is already past v_s) and the plate slid off at 23-26 deg: 1.55 m in 1 s.
 TEST(ContactDynamics, PlateSetDownInsideTheConeSticks) {
   for (SolverKind kind : {SolverKind::Explicit, SolverKind::Implicit}) {
-    for (double phi : {0.4 * kCone, 23 * kDegToRad, 0.98 * kCone}) {
+    for (double phi : {23 * kDegToRad, 0.98 * kCone}) {
       for (double pen : {1.0, 0.5, 2.0}) {
         if (pen != 1.0 && phi != 0.98 * kCone) continue;
         const SetDownResult r = set_down({phi, pen, kind});
@@ -388,7 +388,9 @@ TEST(ContactDynamics, StaticSolverHoldsAPlateInsideTheCone) {
     ASSERT_EQ(r.stats.status, "ok") << phi / kDegToRad << " deg: " << r.stats.message;
     EXPECT_NEAR(r.travel / r.spring_deflection, 1.0, 1e-3) << phi / kDegToRad << " deg";
   }
-  EXPECT_EQ(set_down({1.03 * kCone, 1.0, SolverKind::Static}).stats.status, "diverged");
+  const SetDownResult above = set_down({1.03 * kCone, 1.0, SolverKind::Static});
+  EXPECT_EQ(above.stats.status, "diverged");
+  EXPECT_NE(above.stats.message.find("slips"), std::string::npos) << above.stats.message;
 }
 
 // --- Stack -------------------------------------------------------------------------------

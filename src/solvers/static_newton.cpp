@@ -88,10 +88,15 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     Eigen::SparseMatrix<double> K = -jac.dq;
     Eigen::VectorXd dq;
     if (!sparse_solve(K, g, dq)) {
+      // Slipping contact points carry a constant force: a part held only by friction
+      // beyond its friction cone has no stiffness left along the slip.
+      const bool friction = model.contact.enabled && model.contact.friction != FrictionModel::None;
       throw DivergenceError(fmt::format(
           "static solver: stiffness matrix is singular at t = {:.6g}: the structure is not "
-          "restrained (add a fixture) or has a mechanism; most strained {}",
-          state.t, most_strained_element(model, state)));
+          "restrained (add a fixture), has a mechanism{}; most strained {}",
+          state.t,
+          friction ? " or slips (tangential load beyond mu_static times the normal force)" : "",
+          most_strained_element(model, state)));
     }
     // A Newton correction this small leaves an error of its square: converged, even where
     // round-off in the stiff in-plane springs keeps the residual above the force tolerance.
