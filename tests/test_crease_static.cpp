@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "core/so3.hpp"
 #include "elements/assemble.hpp"
@@ -34,6 +36,32 @@ double M_ref(double deg) {
   return 2e-4 + 1.5e-3 * u - 4e-4 * u * u + 2.5e-4 * u * u * u;
 }
 
+// The flap test: a clamped plate and a flap (both of length a) joined by a crease folded to
+// fold0, very stiff except about the crease line; the flap pulled perpendicular to itself,
+// outward (opening), by F at lever L from the crease line: a follower force along the flap's
+// +z at x_B = L - a/2.
+Model flap_model(std::shared_ptr<const CreaseLaw> law, double fold0, double a, double lever,
+                 double F) {
+  Model m;
+  m.bodies = {plate("fixed", a), plate("flap", a)};
+  m.bodies[0].p0_W = Vec3(-a / 2, 0, 0);
+  m.bodies[0].fixed = true;
+  m.bodies[1].R0_WB = rot_y(fold0);
+  m.bodies[1].p0_W = rot_y(fold0) * Vec3(a / 2, 0, 0);
+  ElementDef e;
+  e.outer = 0;
+  e.inner = 1;
+  e.c_outer_B = Vec3(a / 2, 0, 0);
+  e.c_inner_B = Vec3(-a / 2, 0, 0);
+  e.K << 1e5, 1e5, 1e5, 50, 0, 50;
+  e.crease = 0;
+  m.elements.push_back(e);
+  m.creases.push_back({std::move(law), fold0});
+  m.loads.push_back({1, Vec3(lever - a / 2, 0, 0), Vec3(0, 0, F), Vec3::Zero(), true});
+  m.finalize_dofs();
+  return m;
+}
+
 TEST(CreaseStatic, FlapTestBalancesForceTimesLever) {
   CreaseData d;
   d.source = "flap";
@@ -50,25 +78,7 @@ TEST(CreaseStatic, FlapTestBalancesForceTimesLever) {
   // below 10 deg, about -14 deg opening, i.e. folded a little past flat shut).
   const double fold0 = law->rest_angle(ElementHistory{}, 0);
   for (double F : {0.01, 0.03, 0.06}) {
-    Model m;
-    m.bodies = {plate("fixed", a), plate("flap", a)};
-    m.bodies[0].p0_W = Vec3(-a / 2, 0, 0);
-    m.bodies[0].fixed = true;
-    m.bodies[1].R0_WB = rot_y(fold0);
-    m.bodies[1].p0_W = rot_y(fold0) * Vec3(a / 2, 0, 0);
-    ElementDef e;
-    e.outer = 0;
-    e.inner = 1;
-    e.c_outer_B = Vec3(a / 2, 0, 0);
-    e.c_inner_B = Vec3(-a / 2, 0, 0);
-    e.K << 1e5, 1e5, 1e5, 50, 0, 50;  // very stiff except about the crease line
-    e.crease = 0;
-    m.elements.push_back(e);
-    m.creases.push_back({law, fold0});
-    // Pull perpendicular to the flap, outward (opening), at lever L from the crease line:
-    // a follower force along the flap's +z at x_B = L - a/2.
-    m.loads.push_back({1, Vec3(lever - a / 2, 0, 0), Vec3(0, 0, F), Vec3::Zero(), true});
-    m.finalize_dofs();
+    const Model m = flap_model(law, fold0, a, lever, F);
     State st = initial_state(m);
     SolverSettings set;
     set.kind = SolverKind::Static;
@@ -82,6 +92,76 @@ TEST(CreaseStatic, FlapTestBalancesForceTimesLever) {
     EXPECT_NEAR(F * lever / M_ref(theta_deg), 1.0, 1e-6) << "F " << F << " theta " << theta_deg;
     std::printf("flap test: F = %.3f N, theta = %.3f deg, F L / M(theta) - 1 = %.2e\n", F,
                 theta_deg, F * lever / M_ref(theta_deg) - 1);
+  }
+}
+
+// A flap held open at 95 deg by a follower force F = M_1(95 deg) / L and set down 2 deg off
+// that equilibrium, opened (above 90 deg), with a crease at rest at 70 deg whose second
+// opening follows a softer curve (3/4 of the first). The static solver's load steps start
+// from zero load, where the flap would close towards 70 deg: their equilibria are the
+// solver's way to the loaded one, not states the flap passes through, and must not complete
+// an opening. Formerly, with the opening complete below 80 (or 75) deg, 3 to 8 load steps
+// closed the crease on the way (the first equilibrium of 7 steps is at 73.6 deg) and the
+// final equilibrium followed the second-opening curve: 103.3 deg instead of 95, where
+// F L / M_1 = 0.75; 1 or 2 load steps did not.
+struct HeldFlap {
+  int openings = 0;
+  bool opened = false;
+  double theta_deg = 0;
+  double moment_ratio = 0;  // F L / M_1(theta): 1 on the first-opening curve
+  long rejected = 0;        // load increments cut
+};
+
+double M_first(double deg) {
+  return 2e-3 * (deg - 70) / 60;
+}
+
+HeldFlap hold_flap(int load_steps, double closed_below_deg) {
+  CreaseData d;
+  d.source = "two openings";
+  CreaseCurve c1, c2;
+  c2.opening = 2;
+  for (double deg : {70.0, 90.0, 110.0, 130.0}) {
+    c1.angle_deg.push_back(deg);
+    c1.moment.push_back(M_first(deg));
+    c2.angle_deg.push_back(deg);
+    c2.moment.push_back(0.75 * M_first(deg));
+  }
+  d.curves = {c1, c2};
+  MeasuredLawOptions o;
+  o.rule.closed_below = closed_below_deg * kDegToRad;
+  const auto law = std::make_shared<MeasuredCreaseLaw>(d, o);
+  const double a = 0.05, lever = 0.04, theta_eq = 95, F = M_first(theta_eq) / lever;
+  const double fold0 = kPi - (theta_eq + 2) * kDegToRad;
+  const Model m = flap_model(law, fold0, a, lever, F);
+  State st = initial_state(m);
+  SolverSettings set;
+  set.kind = SolverKind::Static;
+  set.load_steps = load_steps;
+  const SolverStats stats = run_solver(m, st, set, [](const State&, const BodyForces&) {});
+  EXPECT_EQ(stats.status, "ok") << stats.message;
+  HeldFlap r;
+  r.rejected = stats.rejected_steps;
+  r.openings = st.history[0].openings;
+  r.opened = st.history[0].opened;
+  const double alpha = fold_angle<double>(st.R_WB[1], st.R_WB[0], st.history[0].fold_angle);
+  r.theta_deg = (kPi - alpha) / kDegToRad;
+  r.moment_ratio = F * lever / M_first(r.theta_deg);
+  return r;
+}
+
+TEST(CreaseStatic, LoadStepsDoNotAdvanceTheOpeningCount) {
+  for (double closed_below : {80.0, 75.0}) {
+    for (int steps : {1, 7}) {
+      const HeldFlap r = hold_flap(steps, closed_below);
+      EXPECT_EQ(r.openings, 0) << steps << " load steps, closed below " << closed_below;
+      EXPECT_TRUE(r.opened) << steps << " load steps, closed below " << closed_below;
+      EXPECT_NEAR(r.theta_deg, 95, 1e-6) << steps << " load steps";
+      EXPECT_NEAR(r.moment_ratio, 1.0, 1e-9) << steps << " load steps";
+      if (steps > 1) {
+        EXPECT_GT(r.rejected, 0);  // the path had step cuts too
+      }
+    }
   }
 }
 
@@ -152,6 +232,59 @@ TEST(CreaseStatic, TwoPanelsPulledOpenFollowClosedForm) {
   EXPECT_NEAR(st.drive_s[0], drive.travel, 1e-15);
   RecordProperty("worst_relative_force_error", std::to_string(worst));
   std::printf("two panels: %d states, worst |F/F_ref - 1| = %.3g\n", checked, worst);
+}
+
+// A flap with a softening stretch in its crease law (moment falling from 60 to 80 deg) opened
+// by a soft drive at its tip snaps from 62.6 to 75.9 deg, which the static solver passes by
+// settling (pseudo-time dynamic relaxation). The settling steps are not states the flap
+// passes through: the crease, marked opened above 76.5 deg, must stay unopened, as every
+// committed equilibrium is below that.
+TEST(CreaseStatic, SettleDoesNotOpenTheCrease) {
+  CreaseData d;
+  d.source = "snap";
+  CreaseCurve c;
+  const std::vector<double> deg{30, 45, 60, 70, 80, 95, 110, 140};
+  const std::vector<double> moment{0.5, 0.8, 1.0, 0.9, 0.8, 1.0, 1.5, 2.5};  // mN m
+  for (size_t i = 0; i < deg.size(); ++i) {
+    c.angle_deg.push_back(deg[i]);
+    c.moment.push_back(moment[i] * 1e-3);
+  }
+  d.curves = {c};
+  MeasuredLawOptions o;
+  o.rule.opened_above = 76.5 * kDegToRad;
+  const auto law = std::make_shared<MeasuredCreaseLaw>(d, o);
+  const double a = 0.05, fold0 = kPi - 40 * kDegToRad;
+  Model m = flap_model(law, fold0, a, 0.04, 0.0);
+  m.loads.clear();
+  DriveDef drive;  // the tip pulled along its initial opening direction through a soft gauge
+  drive.body = 1;
+  drive.point_B = Vec3(a / 2, 0, 0);
+  drive.start_W = m.bodies[1].p0_W + m.bodies[1].R0_WB * drive.point_B;
+  drive.direction_W = -Vec3::UnitY().cross(m.bodies[1].R0_WB * Vec3::UnitX()).normalized();
+  drive.stiffness = 0.1;  // N/m: softer than the crease's softening at the tip
+  drive.travel = 0.24;
+  drive.step = 0.005;
+  m.drives.push_back(drive);
+  m.finalize_dofs();
+  State st = initial_state(m);
+  SolverSettings set;
+  set.kind = SolverKind::Static;
+  double theta_max = 0, jump = 0, theta_prev = 0;
+  bool opened_on_path = false;
+  const SolverStats stats = run_solver(m, st, set, [&](const State& x, const BodyForces&) {
+    const double alpha = fold_angle<double>(x.R_WB[1], x.R_WB[0], x.history[0].fold_angle);
+    const double theta = (kPi - alpha) / kDegToRad;
+    if (x.t > 0) jump = std::max(jump, theta - theta_prev);
+    theta_prev = theta;
+    theta_max = std::max(theta_max, theta);
+    opened_on_path = opened_on_path || x.history[0].opened;
+  });
+  ASSERT_EQ(stats.status, "ok") << stats.message;
+  EXPECT_GE(stats.settles, 1);
+  EXPECT_GT(jump, 10);  // the snap
+  EXPECT_LT(theta_max, 76.5);
+  EXPECT_FALSE(opened_on_path);
+  EXPECT_FALSE(st.history[0].opened);
 }
 
 }  // namespace

@@ -58,6 +58,7 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   const double every = output_interval(settings);
   stats.smallest_step = stats.largest_step = h;
   set_drives_at_time(model, state, state.t);
+  commit_history(model, state);  // the start is a state the structure is in
   BodyForces f;
   compute_forces(model, state, f);
   ++stats.force_evaluations;

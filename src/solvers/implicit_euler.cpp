@@ -67,6 +67,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   const double length_scale = std::max(model.sheet.length, 1e-3);
   const double tol = settings.atol + settings.rtol * length_scale;
   set_drives_at_time(model, state, state.t);
+  commit_history(model, state);  // the start is a state the structure is in
   BodyForces f;
   compute_forces(model, state, f);
   ++stats.force_evaluations;

@@ -88,10 +88,15 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     Eigen::SparseMatrix<double> K = -jac.dq;
     Eigen::VectorXd dq;
     if (!sparse_solve(K, g, dq)) {
+      // Slipping contact points carry a constant force: a part held only by friction
+      // beyond its friction cone has no stiffness left along the slip.
+      const bool friction = model.contact.enabled && model.contact.friction != FrictionModel::None;
       throw DivergenceError(fmt::format(
           "static solver: stiffness matrix is singular at t = {:.6g}: the structure is not "
-          "restrained (add a fixture) or has a mechanism; most strained {}",
-          state.t, most_strained_element(model, state)));
+          "restrained (add a fixture), has a mechanism{}; most strained {}",
+          state.t,
+          friction ? " or slips (tangential load beyond mu_static times the normal force)" : "",
+          most_strained_element(model, state)));
     }
     // A Newton correction this small leaves an error of its square: converged, even where
     // round-off in the stiff in-plane springs keeps the residual above the force tolerance.
@@ -139,11 +144,15 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
 }
 
 // A Newton step may carry a plate through another before their contact switches on; the
-// equilibrium found then holds them interpenetrating. Plates overlapping by more than half the
-// sheet's thickness are taken as such and the increment is cut.
+// equilibrium found then holds them interpenetrating. Two plates overlapping by more than half
+// the thinner one's thickness are taken as such and the increment is cut.
 bool tunnelled(const Model& model, const State& state) {
   if (!model.contact.enabled) return false;
-  return contact_summary(model, state).max_penetration > 0.5 * model.sheet.thickness;
+  for (const ContactPairForce& p : contact_summary(model, state).pairs) {
+    const double thinner = std::min(model.bodies[p.a].size.z(), model.bodies[p.b].size.z());
+    if (p.max_penetration > 0.5 * thinner) return true;
+  }
+  return false;
 }
 
 // One pseudo-time step of dynamic relaxation from the current poses q_n with velocity v
@@ -184,8 +193,10 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
 // unbalanced forces with kinetic damping (the velocity is zeroed whenever the forces turn
 // against it, i.e. at each peak of the kinetic energy), in pseudo-time steps h that grow on
 // success, until Newton converges from where it has arrived.
+// On a drive path (`on_path`) the settling steps commit the contact history (below); crease
+// openings wait for the equilibrium at the end, which the caller commits.
 bool settle(const Model& model, State& state, const SolverSettings& settings, double fscale,
-            BodyForces& f, SolverStats& stats, int stall_iteration) {
+            BodyForces& f, SolverStats& stats, int stall_iteration, bool on_path) {
   const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
   constexpr double kFirstStep = 1e-4, kNewtonStep = 1.0, kSmallestStep = 1e-9;  // s
   constexpr int kMaxSteps = 1000;
@@ -201,13 +212,18 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
       continue;
     }
     if (relaxation_step(model, state, M, h, v, settings, f, stats, moved)) {
-      // The settling path is history too (sides, anchors), with its pseudo-velocities: a
-      // contact point sliding through the snap stays sliding, as in a dynamic pull, instead
-      // of re-sticking at every pseudo step (the statics' velocities are zero).
+      // The snap the settling steps stand for is contact history (sides, anchors), with its
+      // pseudo-velocities: a contact point sliding through the snap stays sliding, as in a
+      // dynamic pull, instead of re-sticking at every pseudo step (the statics' velocities
+      // are zero), and the sides keep the plates from passing through each other. Crease
+      // openings are not: the pseudo-time swing of a crease past an opening threshold is the
+      // relaxation's own (it has no damping but the kinetic one), not the structure's.
       v = moved / h;
-      set_velocity(model, state, v);
-      commit_history(model, state);
-      set_velocity(model, state, Eigen::VectorXd::Zero(model.num_dofs));
+      if (on_path) {
+        set_velocity(model, state, v);
+        commit_contact_history(model, state);
+        set_velocity(model, state, Eigen::VectorXd::Zero(model.num_dofs));
+      }
       if (residual_norm(model, f) <= settings.tolerance * fscale) return true;
       if (generalized_forces(model, f).dot(v) < 0) v.setZero();
       h *= 2;
@@ -225,11 +241,14 @@ constexpr int kPathStallIteration = 4;
 
 // Moves a parameter (load scale or drive displacement) from a to b in adaptive increments.
 // `dx` is the first increment tried and, on return, the last one that worked (so that the
-// next interval starts from it). `stall_iteration` as for solve_equilibrium.
+// next interval starts from it). `stall_iteration` as for solve_equilibrium. `on_path`: the
+// equilibria are states the structure passes through (a drive path), committed as history;
+// otherwise (load stepping) they are the solver's own way to the end, and history is left
+// to the caller.
 template <class Setter>
 void continuation(const Model& model, State& state, const SolverSettings& settings, double fscale,
                   double a, double b, double& dx, Setter set, const char* what, BodyForces& f,
-                  SolverStats& stats, int stall_iteration = 0) {
+                  SolverStats& stats, bool on_path, int stall_iteration = 0) {
   double x = a;
   dx = (b > a) ? std::min(dx, b - a) : std::max(dx, b - a);
   const double dx_min = std::abs(b - a) * 1e-6;
@@ -240,9 +259,9 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
     set(state, x_try);
     if (solve_equilibrium(model, state, settings, fscale, f, stats, stall_iteration) &&
         !tunnelled(model, state)) {
-      // Every equilibrium on the path is history: crease openings, friction anchors and
+      // Every equilibrium on a drive path is history: crease openings, friction anchors and
       // the side each contact point is on follow the path, not only the output points.
-      commit_history(model, state);
+      if (on_path) commit_history(model, state);
       x = x_try;
       dx *= 1.5;
       if ((b > a ? dx > (b - a) : dx < (b - a))) dx = b - a;
@@ -257,9 +276,9 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
       const double x_jump =
           (b > a) ? std::min(b, x + kJump * (b - a)) : std::max(b, x + kJump * (b - a));
       set(state, x_jump);
-      if (settle(model, state, settings, fscale, f, stats, stall_iteration) &&
+      if (settle(model, state, settings, fscale, f, stats, stall_iteration, on_path) &&
           !tunnelled(model, state)) {
-        commit_history(model, state);
+        if (on_path) commit_history(model, state);
         ++stats.settles;
         x = x_jump;
         dx = kJump * (b - a);
@@ -284,10 +303,14 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   for (Vec3& w : state.w_W) w.setZero();
   BodyForces f;
   const bool path = !model.drives.empty() && model.drives[0].travel > 0 && model.drives[0].step > 0;
-  // Loads first, by load stepping from zero.
+  // Loads first, by load stepping from zero. The load steps' equilibria are the solver's
+  // way to the loaded equilibrium of the initial state, not states the structure passes
+  // through (started from zero load, a structure set up near its loaded equilibrium swings
+  // back towards its rest shape): only the loaded equilibrium is committed.
   const double lambda_end = state.load_scale;
   state.load_scale = 0;
   state.t = 0;
+  commit_history(model, state);  // the initial state is one the structure is in
   compute_forces(model, state, f);
   if (!path) on_output(state, f);
   double dlambda = lambda_end / std::max(1, settings.load_steps);
@@ -297,7 +320,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
         s.load_scale = x;
         s.t = x;
       },
-      "load scale", f, stats);
+      "load scale", f, stats, false);
   commit_history(model, state);
   ++stats.steps;
   if (!path) {
@@ -329,7 +352,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
           }
           s.t = x;
         },
-        "drive displacement", f, stats, kPathStallIteration);
+        "drive displacement", f, stats, true, kPathStallIteration);
     commit_history(model, state);
     ++stats.steps;
     on_output(state, f);
