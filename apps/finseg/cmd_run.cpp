@@ -30,7 +30,7 @@ std::string where(const RunRecorder& rec) {
 }
 
 void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStats& stats,
-                   double wall) {
+                   double wall, const Model& model) {
   fmt::print("finseg run {}: {} outputs, {} steps, wall {:.3g} s -> {}\n", o.scene, rec.outputs(),
              stats.steps, wall, o.out);
   for (const ProbeTable& t : rec.tables()) {
@@ -39,8 +39,13 @@ void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStat
     if (t.kind == ProbeKind::Point) {
       fmt::print("  {}: final [{:.6g}, {:.6g}, {:.6g}] m\n", t.name, r[1], r[2], r[3]);
     } else if (t.kind == ProbeKind::Drive) {
-      const nlohmann::json s = probe_summary(t);
-      fmt::print("  {}: peak force {:.6g} N at pull {:.6g} mm\n", t.name,
+      const nlohmann::json s = probe_summary(t, deployed_at_of(model, t));
+      fmt::print("  {}: {}; largest force {:.6g} N at pull {:.6g} mm\n", t.name,
+                 s["deployment_peak_force_N"].is_null()
+                     ? std::string("no deployment peak")
+                     : fmt::format("deployment peak {:.6g} N at pull {:.6g} mm",
+                                   s["deployment_peak_force_N"].get<double>(),
+                                   1e3 * s["deployment_peak_displacement_m"].get<double>()),
                  s["peak_force_N"].get<double>(), 1e3 * s["peak_displacement_m"].get<double>());
     }
   }
@@ -73,7 +78,7 @@ void run_scene(const RunOptions& o) {
                where(rec), o.out);
     throw ExitStatus{3};
   }
-  if (!o.quiet) print_results(rec, o, stats, wall);
+  if (!o.quiet) print_results(rec, o, stats, wall, scene.model);
 }
 
 }  // namespace

@@ -99,7 +99,7 @@ double zigzag_fold_angle(const ZigzagSpec& s, int k) {
   return (crease_kind(s, k) == 'P' ? 2.0 : -2.0) * s.fold_angle;
 }
 
-double zigzag_default_travel(const ZigzagSpec& s) {
+double zigzag_deployed_travel(const ZigzagSpec& s) {
   // Nearest fixed panel on each side of the pulled crease bounds the free linkage.
   const double Lp = panel_length(s);
   double best = INFINITY;
@@ -112,8 +112,11 @@ double zigzag_default_travel(const ZigzagSpec& s) {
     const double reach = links * Lp;
     best = std::min(best, std::sqrt(reach * reach - horizontal * horizontal));
   }
-  if (!std::isfinite(best)) best = Lp;
-  return 0.9 * best;
+  return std::isfinite(best) ? best : Lp;
+}
+
+double zigzag_default_travel(const ZigzagSpec& s) {
+  return 0.9 * zigzag_deployed_travel(s);
 }
 
 SheetSpec zigzag_sheet(const ZigzagSpec& s) {
@@ -167,6 +170,7 @@ Model build_zigzag_model(const ZigzagSpec& s) {
   d.step = s.pull_step;
   d.travel = s.pull_travel > 0 ? s.pull_travel : zigzag_default_travel(s);
   d.speed = d.travel;  // dynamic solvers: the whole travel in 1 s unless changed
+  d.deployed_at = zigzag_deployed_travel(s);
   m.drives.push_back(d);
   m.probes.push_back({"gauge", ProbeKind::Drive, -1, Vec3::Zero(), 0});
   m.probes.push_back({"reaction", ProbeKind::Reaction, -1, Vec3::Zero(), -1});

@@ -61,6 +61,11 @@ SheetSpec zigzag_sheet(const ZigzagSpec& spec);
 /// Signed fold angle of crease k (0-based) in the initial state, rad.
 double zigzag_fold_angle(const ZigzagSpec& spec, int k);
 
+/// Lift of the pulled crease (along the pull) at which the panels between it and the nearest
+/// fixed panel form a straight line: `links a sin(fold_angle)` (links panels of length a);
+/// the strip is fully deployed there (the deployment peak's window ends there), m.
+double zigzag_deployed_travel(const ZigzagSpec& spec);
+
 /// Default pull travel: 90 % of the vertical travel of the pulled crease that would bring
 /// the panels between it and the nearest fixed panels into a straight line.
 double zigzag_default_travel(const ZigzagSpec& spec);

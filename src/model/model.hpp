@@ -68,6 +68,9 @@ struct DriveDef {
   double speed = 0;                  ///< dynamic solvers: ds/dt, m/s
   double travel = 0;                 ///< total drive displacement, m
   double step = 0;                   ///< quasi-static solver: displacement increment, m
+  /// Drive displacement at which the structure is fully deployed (end of the window of the
+  /// deployment peak, probes/deployment_peak.hpp), m; 0: not known, the whole travel.
+  double deployed_at = 0;
 };
 
 enum class ProbeKind { Point, Drive, Reaction, Energy, Contact };

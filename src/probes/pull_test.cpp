@@ -50,6 +50,11 @@ PullResult run_pull_test(const Model& model, const std::vector<int>& watched_pan
     if (p.force > r.peak_force) r.peak_force = p.force, r.peak_displacement = p.displacement;
   }
   r.phases = detect_phases(phase_samples, bend_threshold);
+  std::vector<double> x, force;
+  for (const PullSample& p : r.samples) x.push_back(p.displacement), force.push_back(p.force);
+  const double deployed_at = model.drives[0].deployed_at;
+  r.deployment_peak =
+      find_deployment_peak(x, force, -INFINITY, deployed_at > 0 ? deployed_at : INFINITY);
   return r;
 }
 

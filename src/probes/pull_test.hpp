@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "probes/deployment_peak.hpp"
 #include "probes/deployment_phases.hpp"
 #include "solvers/solver.hpp"
 
@@ -20,13 +21,16 @@ struct PullSample {
   bool finite = true;          ///< every pose and force finite
 };
 
-/// The whole pull: samples, solver counters, phases and the peak force.
+/// The whole pull: samples, solver counters, phases, the deployment peak and the largest force.
 struct PullResult {
   std::vector<PullSample> samples;
   SolverStats stats;
   DeploymentPhases phases;
-  double peak_force = 0;         ///< N
-  double peak_displacement = 0;  ///< m, where the peak occurs
+  /// Deployment peak (find_deployment_peak over [0, drive 0's deployed_at], or the whole
+  /// travel when that is 0): the paper's figure of merit; `x` in m.
+  DeploymentPeak deployment_peak;
+  double peak_force = 0;         ///< largest force over the whole travel (not the above), N
+  double peak_displacement = 0;  ///< m, where the largest force occurs
   double max_penetration = 0;    ///< over the whole pull, m
   bool all_finite = true;
 };

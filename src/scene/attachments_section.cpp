@@ -79,7 +79,7 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Fields f(items[i], {root.context().file, item_field("drives", i)},
                    {"name", "at", "body", "point", "direction", "stiffness", "damping", "speed",
-                    "travel", "step"});
+                    "travel", "step", "deployed_at"});
     DriveDef d;
     d.name = f.required_word("name");
     for (const DriveDef& other : m.drives) {
@@ -97,6 +97,7 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
     d.travel = f.number("travel", 0.0, non_negative("m"));
     d.step = f.number("step", 0.0, non_negative("m"));
     d.speed = f.number("speed", d.travel, non_negative("m/s"));
+    d.deployed_at = f.number("deployed_at", 0.0, non_negative("m (0: the whole travel)"));
     if (d.travel > 0 && !(d.step > 0) && i == 0) {
       f.fail("step", "required (> 0 m) with travel > 0: the static solver's pull increment");
     }

@@ -91,7 +91,8 @@ std::string json_string(const std::string& s) {
 }
 
 std::string data_json(const std::string& title, const std::string& time_label, const Model& model,
-                      const std::vector<Frame>& frames, const Curve& curve) {
+                      const std::vector<Frame>& frames, const Curve& curve,
+                      const std::vector<ChartMark>& marks) {
   const std::size_t n = model.bodies.size();
   // Positions are rounded to 1e-5 of the scene's extent (1e-6 m at the least).
   double extent = 0;
@@ -192,6 +193,14 @@ std::string data_json(const std::string& title, const std::string& time_label, c
     if (i) j += ',';
     put_general(j, curve.y[i], 7);
   }
+  j += "],\"marks\":[";
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    j += i ? ",{\"x\":" : "{\"x\":";
+    put_general(j, marks[i].x, 7);
+    j += ",\"y\":";
+    put_general(j, marks[i].y, 7);
+    j += ",\"label\":" + json_string(marks[i].label) + "}";
+  }
   j += "]}}";
   return j;
 }
@@ -217,7 +226,7 @@ void check_curve(const Model& model, const std::vector<Frame>& frames, const Cur
 
 void write_html_animation(const std::string& path, const std::string& title, const Model& model,
                           const std::vector<Frame>& frames, const Curve& curve,
-                          const std::string& time_label) {
+                          const std::string& time_label, const HtmlAnnotations& notes) {
   if (frames.empty()) throw InputError(model.source, "frames", "at least one frame is needed");
   check_frames(model, frames);
   check_curve(model, frames, curve);
@@ -238,19 +247,28 @@ void write_html_animation(const std::string& path, const std::string& title, con
   }
 
   const std::string tmpl = html::kPageTemplate;
-  const std::string data = script_safe(data_json(title, time_label, model, frames, curve));
+  for (const ChartMark& m : notes.marks) {
+    if (!std::isfinite(m.x) || !std::isfinite(m.y)) {
+      throw InputError(model.source, "chart mark '" + m.label + "'", "must be finite");
+    }
+  }
+  const std::string data =
+      script_safe(data_json(title, time_label, model, frames, curve, notes.marks));
   std::string page;
   page.reserve(tmpl.size() + libs.size() + data.size() + title.size());
   // Each placeholder is looked up in the template only, never in what was inserted.
   std::size_t pos = 0;
-  const std::pair<const char*, const std::string*> parts[] = {
-      {"@@TITLE@@", nullptr}, {"@@LIBS@@", &libs}, {"@@DATA@@", &data}};
-  const std::string escaped_title = html_escape(title);
+  const std::string escaped_title = html_escape(title),
+                    escaped_warning = html_escape(notes.warning);
+  const std::pair<const char*, const std::string*> parts[] = {{"@@TITLE@@", &escaped_title},
+                                                              {"@@WARNING@@", &escaped_warning},
+                                                              {"@@LIBS@@", &libs},
+                                                              {"@@DATA@@", &data}};
   for (const auto& [key, value] : parts) {
     const std::size_t at = tmpl.find(key, pos);
     if (at == std::string::npos) throw std::logic_error(std::string("page template lacks ") + key);
     page.append(tmpl, pos, at - pos);
-    page += value ? *value : escaped_title;
+    page += *value;
     pos = at + std::string(key).size();
   }
   page.append(tmpl, pos, std::string::npos);

@@ -7,7 +7,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -43,12 +45,21 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 std::string data_file(const PlotSpec& spec) {
-  std::string out = "# finseg plot data: one block per series (gnuplot 'index' 0, 1, ...)\n";
+  std::string out =
+      "# finseg plot data: one block per band, then per series (gnuplot 'index' 0, 1, ...)\n";
   out += fmt::format("# x: {}\n# y: {}\n", spec.x_label, spec.y_label);
+  std::size_t block = 0;
+  for (const PlotBand& b : spec.bands) {
+    if (block++ > 0) out += "\n\n";
+    out += fmt::format("# band {}: {} (x lower upper)\n", block - 1, b.title);
+    for (std::size_t i = 0; i < b.x.size(); ++i) {
+      out += fmt::format("{:.10g} {:.10g} {:.10g}\n", b.x[i], b.lower[i], b.upper[i]);
+    }
+  }
   for (std::size_t s = 0; s < spec.series.size(); ++s) {
     const PlotSeries& ser = spec.series[s];
-    if (s > 0) out += "\n\n";
-    out += fmt::format("# series {}: {}\n", s, ser.title);
+    if (block++ > 0) out += "\n\n";
+    out += fmt::format("# series {}: {}\n", block - 1, ser.title);
     for (std::size_t i = 0; i < ser.x.size(); ++i) {
       out += fmt::format("{:.10g} {:.10g}\n", ser.x[i], ser.y[i]);
     }
@@ -70,6 +81,11 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
   }
   g += "set output " + gp_quote(out_path) + "\n";
   g += "set title " + gp_quote(spec.title) + " font ',15'\n";
+  if (!spec.warning.empty()) {
+    g += "set tmargin 5\n";
+    g += "set label 1000 " + gp_quote(spec.warning) +
+         " at screen 0.5, screen 0.975 center front font ',15' tc rgb '#c00000'\n";
+  }
   g += "set xlabel " + gp_quote(spec.x_label) + "\n";
   g += "set ylabel " + gp_quote(spec.y_label) + "\n";
   g += "set border 3 lw 1.2 lc rgb '#333333'\n";
@@ -95,11 +111,32 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
         "front boxed font ',10' tc rgb '#333333'\n",
         m + 1, gp_quote(mk.label), mk.x);
   }
+  double x_lo = INFINITY, x_hi = -INFINITY;
+  for (const PlotSeries& ser : spec.series) {
+    for (double x : ser.x) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+  }
+  for (std::size_t p = 0; p < spec.points.size(); ++p) {
+    const PlotPoint& pt = spec.points[p];
+    // Text on the side facing the middle, so that it stays inside the frame.
+    const bool right_half = pt.x > 0.5 * (x_lo + x_hi);
+    g += fmt::format(
+        "set label {} {} at {:.10g}, {:.10g} {} point pt 7 ps 1.6 lc rgb '#000000' offset char "
+        "{}, 1 front boxed font ',10' tc rgb '#000000'\n",
+        spec.markers.size() + p + 1, gp_quote(pt.label), pt.x, pt.y, right_half ? "right" : "left",
+        right_half ? -1 : 1);
+  }
   g += "plot \\\n";
+  const std::size_t bands = spec.bands.size();
+  for (std::size_t b = 0; b < bands; ++b) {
+    g += fmt::format(
+        "  {} index {} using 1:2:3 with filledcurves lc rgb '#9ecae1' fs transparent solid 0.45 "
+        "noborder title {}, \\\n",
+        gp_quote(dat_path), b, gp_quote(spec.bands[b].title));
+  }
   for (std::size_t s = 0; s < spec.series.size(); ++s) {
     const PlotSeries& ser = spec.series[s];
-    g += fmt::format("  {} index {} using 1:2 with {} lt {} title {}{}\n", gp_quote(dat_path), s,
-                     ser.style, s % std::size(kColours) + 1, gp_quote(ser.title),
+    g += fmt::format("  {} index {} using 1:2 with {} lt {} title {}{}\n", gp_quote(dat_path),
+                     bands + s, ser.style, s % std::size(kColours) + 1, gp_quote(ser.title),
                      s + 1 < spec.series.size() ? ", \\" : "");
   }
   g += "unset output\n";
@@ -151,6 +188,14 @@ void write_plot(const std::string& path, const PlotSpec& spec) {
     throw std::invalid_argument("plot '" + path + "': the file name must end in .png or .svg");
   }
   if (spec.series.empty()) throw std::invalid_argument("plot '" + path + "': no series");
+  for (const PlotBand& b : spec.bands) {
+    if (b.x.size() != b.lower.size() || b.x.size() != b.upper.size()) {
+      throw std::invalid_argument(
+          fmt::format("plot '{}': band '{}' has {} x, {} lower and {} "
+                      "upper values",
+                      path, b.title, b.x.size(), b.lower.size(), b.upper.size()));
+    }
+  }
   for (const PlotSeries& s : spec.series) {
     if (s.x.size() != s.y.size()) {
       throw std::invalid_argument(fmt::format("plot '{}': series '{}' has {} x and {} y values",

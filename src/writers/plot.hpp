@@ -19,10 +19,27 @@ struct PlotMarker {
   std::string label;
 };
 
+/// A marked point with a label beside it (e.g. the deployment peak).
+struct PlotPoint {
+  double x = 0, y = 0;
+  std::string label;
+};
+
+/// A shaded band between two curves over the same abscissae (e.g. a measured spread).
+struct PlotBand {
+  std::string title;
+  std::vector<double> x, lower, upper;
+};
+
 struct PlotSpec {
   std::string title, x_label, y_label;  ///< labels carry units
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;
+  std::vector<PlotPoint> points;
+  std::vector<PlotBand> bands;  ///< drawn beneath the series
+  /// Shown in red across the top when not empty, e.g. "RUN DIVERGED: ...": a plot of a run
+  /// that did not finish must not look like a finished one.
+  std::string warning;
 };
 
 /// Writes `path` (.png or .svg, chosen by extension); the data and the gnuplot script are

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "probes/deployment_peak.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/html_animation.hpp"
 #include "writers/plot.hpp"
@@ -15,6 +16,10 @@ namespace finseg {
 namespace {
 
 namespace fs = std::filesystem;
+
+nlohmann::json or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
 
 nlohmann::json solver_json(const SolverSettings& s) {
   return {{"type", solver_name(s.kind)},
@@ -76,10 +81,9 @@ std::vector<PlotMarker> phase_markers(const DeploymentPhases& p) {
 }
 
 nlohmann::json phases_json(const DeploymentPhases& p, const PhaseSettings& s) {
-  auto value = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
-  return {{"initial_deformation_m", value(p.initial_deformation)},
-          {"contact_m", value(p.contact)},
-          {"bending_m", value(p.bending)},
+  return {{"initial_deformation_m", or_null(p.initial_deformation)},
+          {"contact_m", or_null(p.contact)},
+          {"bending_m", or_null(p.bending)},
           {"watched_panels", s.panels},
           {"bend_threshold_deg", s.bend_threshold / kDegToRad},
           {"rule",
@@ -120,7 +124,58 @@ void optional_output(RunReport& report, const std::string& file, F&& write) {
   }
 }
 
+// Largest force, deployment peak and end-of-travel force of a drive probe (docs/scene.md).
+void add_drive_peaks(const ProbeTable& t, double deployed_at, nlohmann::json& j) {
+  const int fc = column(t, "force_N");
+  std::vector<double> x, f;
+  for (const auto& r : t.rows) x.push_back(r[0]), f.push_back(r[fc]);
+  const int best = max_force_index(x, f, -INFINITY, INFINITY);
+  j["peak_force_N"] = f[best];
+  j["peak_displacement_m"] = x[best];
+  const double hi = deployed_at > 0 ? deployed_at : INFINITY;
+  const DeploymentPeak p = find_deployment_peak(x, f, -INFINITY, hi);
+  j["deployment_peak_force_N"] = or_null(p.force);
+  j["deployment_peak_displacement_m"] = or_null(p.x);
+  j["deployment_window_m"] = {x.front(), std::min(hi, x.back())};
+  j["deployed_at_m"] = deployed_at > 0 ? nlohmann::json(deployed_at) : nlohmann::json();
+  j["end_force_N"] = f.back();
+  j["end_displacement_m"] = x.back();
+}
+
+// Deployment peak and, where it differs, the largest force of a drive probe's summary, in
+// the plot's units (mm, N).
+std::vector<ChartMark> peak_marks(const nlohmann::json& s) {
+  std::vector<ChartMark> m;
+  if (!s.contains("peak_force_N")) return m;
+  const double px = s["peak_displacement_m"], pf = s["peak_force_N"];
+  if (!s["deployment_peak_force_N"].is_null()) {
+    const double dx = s["deployment_peak_displacement_m"], df = s["deployment_peak_force_N"];
+    m.push_back({1e3 * dx, df, fmt::format("deployment peak {:.4g} N", df)});
+    if (dx == px) return m;
+  }
+  m.push_back({1e3 * px, pf, fmt::format("largest force {:.4g} N", pf)});
+  return m;
+}
+
+// Banner of a run that did not finish (status other than "ok"); empty for a finished one.
+std::string unfinished_warning(const SolverStats& stats) {
+  if (stats.status == "ok") return "";
+  std::string status = stats.status;
+  for (char& c : status) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return fmt::format("RUN {} - not finished, results end early{}{}", status,
+                     stats.message.empty() ? "" : ": ", stats.message);
+}
+
 }  // namespace
+
+double deployed_at_of(const Model& m, const ProbeTable& t) {
+  for (const ProbeDef& p : m.probes) {
+    if (p.name == t.name && p.kind == ProbeKind::Drive && p.drive >= 0) {
+      return m.drives[p.drive].deployed_at;
+    }
+  }
+  return 0;
+}
 
 nlohmann::json model_counts(const Model& m) {
   double mass = 0;
@@ -160,7 +215,7 @@ std::string pairs_csv(const ProbeTable& t, const Model& model) {
   return out;
 }
 
-nlohmann::json probe_summary(const ProbeTable& t) {
+nlohmann::json probe_summary(const ProbeTable& t, double deployed_at) {
   nlohmann::json j{{"type", probe_kind_name(t.kind)},
                    {"file", t.name + ".csv"},
                    {"rows", t.rows.size()},
@@ -178,15 +233,7 @@ nlohmann::json probe_summary(const ProbeTable& t) {
     for (std::size_t c = 0; c < t.columns.size(); ++c) f[t.columns[c]] = last[c];
     j["final"] = f;
   }
-  if (t.kind == ProbeKind::Drive) {
-    const int fc = column(t, "force_N");
-    std::size_t best = 0;
-    for (std::size_t r = 1; r < t.rows.size(); ++r) {
-      if (t.rows[r][fc] > t.rows[best][fc]) best = r;
-    }
-    j["peak_force_N"] = t.rows[best][fc];
-    j["peak_displacement_m"] = t.rows[best][0];
-  }
+  if (t.kind == ProbeKind::Drive) add_drive_peaks(t, deployed_at, j);
   return j;
 }
 
@@ -199,7 +246,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   for (const ProbeTable& t : rec.tables()) {
     write_csv(dir, t.name + ".csv", probe_csv(t), report);
     if (t.pairs) write_csv(dir, pairs_file(t), pairs_csv(t, scene.model), report);
-    probes[t.name] = probe_summary(t);
+    probes[t.name] = probe_summary(t, deployed_at_of(scene.model, t));
     if (t.kind == ProbeKind::Drive && !first_drive) first_drive = &t;
   }
   const OutputSettings& o = scene.outputs;
@@ -215,12 +262,20 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   }
   const std::string title =
       scene.title.empty() ? fs::path(scene.file).stem().string() : scene.title;
+  const std::string warning = unfinished_warning(stats);
   if (o.plot) {
     for (const ProbeTable& t : rec.tables()) {
       if (t.kind != ProbeKind::Drive) continue;
       const Curve c = drive_curve(t);
-      PlotSpec spec{title + ": " + t.name, c.x_label, c.y_label, {{t.name, c.x, c.y, "lines"}}, {}};
+      PlotSpec spec;
+      spec.title = title + ": " + t.name;
+      spec.x_label = c.x_label;
+      spec.y_label = c.y_label;
+      spec.series = {{t.name, c.x, c.y, "lines"}};
       if (&t == first_drive && o.phases.enabled) spec.markers = phase_markers(phases);
+      for (const ChartMark& m : peak_marks(probes[t.name]))
+        spec.points.push_back({m.x, m.y, m.label});
+      spec.warning = warning;
       optional_output(report, t.name + ".png",
                       [&] { write_plot((fs::path(dir) / (t.name + ".png")).string(), spec); });
     }
@@ -236,8 +291,12 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                               : rec.abscissa() == "load_scale" ? "load scale [-]"
                                                                : "pull displacement [m]";
     optional_output(report, "animation.html", [&] {
+      HtmlAnnotations notes{warning, {}};
+      if (first_drive && curve.x.size() == rec.frames().size()) {
+        notes.marks = peak_marks(probes[first_drive->name]);
+      }
       write_html_animation((fs::path(dir) / "animation.html").string(), title, scene.model,
-                           rec.frames(), curve, label);
+                           rec.frames(), curve, label, notes);
     });
   }
   nlohmann::json j{{"scene", scene.file},

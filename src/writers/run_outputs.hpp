@@ -29,10 +29,17 @@ std::string pairs_file(const ProbeTable& table);
 /// touching pair per output.
 std::string pairs_csv(const ProbeTable& table, const Model& model);
 
+/// DriveDef::deployed_at of the drive a drive probe reads (matched by probe name), m; 0 when
+/// not known or not a drive probe.
+double deployed_at_of(const Model& model, const ProbeTable& table);
+
 /// Per-probe summary: file, type, rows, final (point: [x, y, z] m; others: last row by
-/// column name), for drive probes peak_force_N and peak_displacement_m, for contact probes
-/// with pairs pairs_file and pair_rows.
-nlohmann::json probe_summary(const ProbeTable& table);
+/// column name); for contact probes with pairs pairs_file and pair_rows; for drive probes
+/// peak_force_N / peak_displacement_m (largest force over the whole travel),
+/// deployment_peak_force_N / deployment_peak_displacement_m (find_deployment_peak over
+/// deployment_window_m = [first displacement, `deployed_at` m or the travel's end when 0];
+/// null when there is none) and end_force_N / end_displacement_m (the last row).
+nlohmann::json probe_summary(const ProbeTable& table, double deployed_at = 0);
 
 /// What a finished (or diverged) run produced.
 struct RunReport {

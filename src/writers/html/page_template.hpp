@@ -1,5 +1,6 @@
 // The HTML page written by write_html_animation: layout, style and the small application
-// script. Placeholders (each exactly once): @@TITLE@@ (HTML-escaped title), @@LIBS@@ (the
+// script. Placeholders (each exactly once, in this order): @@TITLE@@ (HTML-escaped
+// title), @@WARNING@@ (HTML-escaped banner of a run that did not finish, or empty), @@LIBS@@ (the
 // inlined three.js, OrbitControls and Chart.js <script> elements), @@DATA@@ (the model and
 // frames as JSON). Lengths in the data are in m, angles as unit quaternions (x, y, z, w).
 #pragma once
@@ -27,6 +28,9 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   header h1 { margin: 0; font-size: 17px; font-weight: 600; letter-spacing: 0.2px; }
   header .sub { color: #a9b7c6; font-size: 12.5px; }
   header .brand { margin-left: auto; color: #7f93a8; font-size: 12px; }
+  #runwarning { margin: 10px 18px 0; padding: 10px 14px; border-radius: 6px; font-weight: 700;
+    background: #fde2e1; color: #9b1c1c; border: 2px solid #c00000; }
+  #runwarning:empty { display: none; }
   #error { display: none; margin: 10px 18px 0; padding: 10px 14px; border-radius: 6px;
     background: #fde8e6; color: var(--bad); border: 1px solid #f3b8b3; white-space: pre-wrap; }
   main { flex: 1; display: flex; gap: 12px; padding: 12px 18px 0; min-height: 0; }
@@ -73,6 +77,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   <h1 id="title"></h1><span class="sub" id="subtitle"></span>
   <span class="brand">finseg &middot; finite-segment simulation</span>
 </header>
+<div id="runwarning" role="alert">@@WARNING@@</div>
 <div id="error" role="alert"></div>
 <main>
   <div class="card" id="view">
@@ -343,9 +348,20 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     var ymin = Math.min.apply(null, cv.y), ymax = Math.max.apply(null, cv.y);
     xDec = decimalsFor(xmax - xmin); yDec = decimalsFor(ymax - ymin);
     var pts2 = cv.x.map(function (x, j) { return { x: x, y: cv.y[j] }; });
+    var marks = cv.marks || [];
     var markerLine = {
       id: "finsegMarker",
       afterDatasetsDraw: function (ch) {
+        marks.forEach(function (m) {
+          var mx = ch.scales.x.getPixelForValue(m.x), my = ch.scales.y.getPixelForValue(m.y);
+          ch.ctx.save();
+          ch.ctx.fillStyle = "#111111";
+          ch.ctx.beginPath(); ch.ctx.arc(mx, my, 5, 0, 2 * Math.PI); ch.ctx.fill();
+          ch.ctx.font = "12px DejaVu Sans, sans-serif";
+          ch.ctx.textAlign = mx > (ch.scales.x.left + ch.scales.x.right) / 2 ? "right" : "left";
+          ch.ctx.fillText(m.label, mx + (ch.ctx.textAlign === "right" ? -8 : 8), my - 8);
+          ch.ctx.restore();
+        });
         var p = pts2[Math.min(st.frame, pts2.length - 1)];
         var xs = ch.scales.x, ys = ch.scales.y, ctx = ch.ctx;
         var px = xs.getPixelForValue(p.x);
