@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include "core/cubic_spline.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "probes/deployment_peak.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/plot.hpp"
 
@@ -28,26 +30,67 @@ struct Column {
   double factor = 1;
 };
 
-Column find_column(const std::vector<std::string>& header, const std::string& wanted,
-                   const std::vector<std::pair<std::string, double>>& units,
-                   const std::string& path, const char* what) {
-  std::string names;
-  for (size_t i = 0; i < header.size(); ++i) {
-    names += (i ? ", " : "") + header[i];
-    const bool named = !wanted.empty() && header[i] == wanted;
-    for (const auto& [suffix, factor] : units) {
-      if (ends_with(header[i], suffix) && (named || wanted.empty())) {
-        return {static_cast<int>(i), factor};
-      }
-    }
-    if (named) {
-      throw InputError(path, "header",
-                       fmt::format("column '{}' has no unit suffix ({})", wanted, what));
-    }
+// A column's unit from its name's suffix; 0 when it has none of `units`.
+double unit_factor(const std::string& name,
+                   const std::vector<std::pair<std::string, double>>& units) {
+  for (const auto& [suffix, factor] : units) {
+    if (ends_with(name, suffix)) return factor;
   }
-  const std::string need =
-      wanted.empty() ? fmt::format("a {} column", what) : fmt::format("column '{}'", wanted);
-  throw InputError(path, "header", fmt::format("no {} among the columns [{}]", need, names));
+  return 0;
+}
+
+// The wanted column (by name, or the first whose name carries one of `units`; else the
+// first column not in `taken`) and its factor to SI; a column without a unit suffix is read
+// in `default_unit` (units[0]) and a note says so.
+Column find_column(const std::vector<std::string>& header, const std::string& wanted,
+                   const std::vector<std::pair<std::string, double>>& units, int taken,
+                   ForceCurve& c, const char* what) {
+  int index = -1;
+  for (size_t i = 0; i < header.size() && index < 0; ++i) {
+    const bool match = wanted.empty() ? unit_factor(header[i], units) > 0 : header[i] == wanted;
+    if (match) index = static_cast<int>(i);
+  }
+  if (index < 0 && !wanted.empty()) {
+    std::string names;
+    for (size_t i = 0; i < header.size(); ++i) names += (i ? ", " : "") + header[i];
+    throw InputError(c.source, "header",
+                     fmt::format("no column '{}' among the columns [{}]", wanted, names));
+  }
+  for (size_t i = 0; i < header.size() && index < 0; ++i) {
+    if (static_cast<int>(i) != taken) index = static_cast<int>(i);
+  }
+  if (index < 0) {
+    throw InputError(c.source, "header",
+                     fmt::format("no {} column: the header has {} column(s)", what, header.size()));
+  }
+  const double factor = unit_factor(header[index], units);
+  if (factor > 0) return {index, factor};
+  c.notes.push_back(fmt::format("column '{}' has no unit suffix: read as {} in {}", header[index],
+                                what, units[0].first.substr(1)));
+  return {index, units[0].second};
+}
+
+// Cells of one line; in a ';'-separated file a ',' is a decimal comma.
+std::vector<std::string> cells_of(std::string line, bool semicolons) {
+  if (semicolons) {
+    std::replace(line.begin(), line.end(), ',', '.');
+    std::replace(line.begin(), line.end(), ';', ',');
+  }
+  return split_csv_line(line);
+}
+
+// Values this large overflow the spline, the mean and the squared errors.
+constexpr double kLargestValue = 1e100;
+
+double read_value(const std::string& cell, double factor, const std::string& path, int line,
+                  const std::string& column) {
+  const std::string where = fmt::format("line {}, column {}", line, column);
+  const double v = factor * parse_number(cell, path, where);
+  if (!(std::abs(v) < kLargestValue)) {
+    throw InputError(path, where,
+                     fmt::format("'{}' is out of range; |value| must be below 1e100 (SI)", cell));
+  }
+  return v;
 }
 
 std::vector<double> resample(const ForceCurve& c, const std::vector<double>& x) {
@@ -59,9 +102,27 @@ std::vector<double> resample(const ForceCurve& c, const std::vector<double>& x) 
 }
 
 // Largest value and its abscissa.
-std::pair<double, double> peak(const std::vector<double>& x, const std::vector<double>& y) {
+std::pair<double, double> largest(const std::vector<double>& x, const std::vector<double>& y) {
   const size_t i = std::max_element(y.begin(), y.end()) - y.begin();
   return {y[i], x[i]};
+}
+
+// Every number of the comparison finite, or an InputError naming what overflowed.
+void require_finite(const Comparison& c, const ForceCurve& sim,
+                    const std::vector<ForceCurve>& runs) {
+  const auto finite = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  };
+  if (!finite(c.simulation)) throw InputError(sim.source, "values", "resampled curve overflows");
+  for (size_t k = 0; k < runs.size(); ++k) {
+    if (!finite(c.runs[k])) throw InputError(runs[k].source, "values", "resampled curve overflows");
+  }
+  if (!finite(c.mean) || !finite(c.stddev) || !finite(c.difference) ||
+      !std::isfinite(c.rms_error) || !std::isfinite(c.peak_error)) {
+    throw InputError(runs.front().source, "values",
+                     "the comparison overflows or divides by a zero peak force (mean, spread, "
+                     "rms or peak error not finite)");
+  }
 }
 
 }  // namespace
@@ -76,18 +137,26 @@ ForceCurve read_force_curve(const std::string& path, const std::string& x_column
   size_t ncols = 0;
   std::string line;
   int number = 0;
-  bool have_header = false;
+  bool have_header = false, semicolons = false;
   while (std::getline(in, line)) {
     ++number;
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     if (trim(line).empty()) continue;
-    const std::vector<std::string> cells = split_csv_line(line);
+    if (!have_header) semicolons = line.find(';') != std::string::npos;
+    const std::vector<std::string> cells = cells_of(line, semicolons);
     if (!have_header) {
-      cx = find_column(cells, x_column, {{"_mm", 1e-3}, {"_m", 1.0}}, path,
-                       "displacement (name ending in _mm or _m)");
-      cy = find_column(cells, y_column, {{"_mN", 1e-3}, {"_N", 1.0}}, path,
-                       "force (name ending in _N or _mN)");
+      if (std::all_of(cells.begin(), cells.end(), [](const std::string& cell) {
+            char* end = nullptr;
+            std::strtod(cell.c_str(), &end);
+            return !cell.empty() && *end == '\0';
+          })) {
+        throw InputError(path, fmt::format("line {}", number),
+                         "the first line holds numbers; a header line naming the columns "
+                         "(e.g. pull_displacement_mm,force_N) must come first");
+      }
+      cx = find_column(cells, x_column, {{"_mm", 1e-3}, {"_m", 1.0}}, -1, c, "displacement");
+      cy = find_column(cells, y_column, {{"_N", 1.0}, {"_mN", 1e-3}}, cx.index, c, "force");
       c.x_column = cells[cx.index];
       c.y_column = cells[cy.index];
       ncols = cells.size();
@@ -98,10 +167,8 @@ ForceCurve read_force_curve(const std::string& path, const std::string& x_column
       throw InputError(path, fmt::format("line {}", number),
                        fmt::format("{} values, the header has {} columns", cells.size(), ncols));
     }
-    const double x = cx.factor * parse_number(cells[cx.index], path,
-                                              fmt::format("line {}: {}", number, c.x_column));
-    const double f = cy.factor * parse_number(cells[cy.index], path,
-                                              fmt::format("line {}: {}", number, c.y_column));
+    const double x = read_value(cells[cx.index], cx.factor, path, number, c.x_column);
+    const double f = read_value(cells[cy.index], cy.factor, path, number, c.y_column);
     if (!c.x.empty() && !(x > c.x.back())) {
       throw InputError(path, fmt::format("line {}, column {}", number, c.x_column),
                        "displacement must increase strictly from row to row");
@@ -117,7 +184,8 @@ ForceCurve read_force_curve(const std::string& path, const std::string& x_column
   return c;
 }
 
-Comparison compare_curves(const ForceCurve& sim, const std::vector<ForceCurve>& runs, int samples) {
+Comparison compare_curves(const ForceCurve& sim, const std::vector<ForceCurve>& runs, int samples,
+                          const CompareWindow& window) {
   if (runs.empty()) throw InputError("<compare>", "measurements", "need at least one");
   if (samples < 2) throw InputError("<compare>", "samples", "must be >= 2");
   double a = sim.x.front(), b = sim.x.back();
@@ -126,6 +194,12 @@ Comparison compare_curves(const ForceCurve& sim, const std::vector<ForceCurve>& 
     throw InputError(runs.front().source, "displacement",
                      "the displacement ranges of the curves do not overlap");
   }
+  if (!(std::min(b, window.hi) > std::max(a, window.lo))) {
+    throw InputError("<compare>", "--window",
+                     fmt::format("{:g} .. {:g} mm misses the common range {:g} .. {:g} mm",
+                                 1e3 * window.lo, 1e3 * window.hi, 1e3 * a, 1e3 * b));
+  }
+  a = std::max(a, window.lo), b = std::min(b, window.hi);
   Comparison c;
   for (int i = 0; i < samples; ++i) c.x.push_back(a + (b - a) * i / (samples - 1));
   c.simulation = resample(sim, c.x);
@@ -148,9 +222,20 @@ Comparison compare_curves(const ForceCurve& sim, const std::vector<ForceCurve>& 
     if (std::abs(d) > c.max_error) c.max_error = std::abs(d), c.max_error_x = c.x[i];
   }
   c.rms_error = std::sqrt(sq / c.x.size());
-  std::tie(c.sim_peak, c.sim_peak_x) = peak(c.x, c.simulation);
-  std::tie(c.mean_peak, c.mean_peak_x) = peak(c.x, c.mean);
+  std::tie(c.sim_max, c.sim_max_x) = largest(c.x, c.simulation);
+  std::tie(c.mean_max, c.mean_max_x) = largest(c.x, c.mean);
+  const DeploymentPeak ps = find_deployment_peak(c.x, c.simulation, a, b);
+  const DeploymentPeak pm = find_deployment_peak(c.x, c.mean, a, b);
+  if (ps.found && pm.found) {
+    c.peak_rule = "deployment";
+    c.sim_peak = ps.force, c.sim_peak_x = ps.x, c.mean_peak = pm.force, c.mean_peak_x = pm.x;
+  } else {
+    c.peak_rule = "largest";
+    c.sim_peak = c.sim_max, c.sim_peak_x = c.sim_max_x;
+    c.mean_peak = c.mean_max, c.mean_peak_x = c.mean_max_x;
+  }
   c.peak_error = (c.sim_peak - c.mean_peak) / c.mean_peak;
+  require_finite(c, sim, runs);
   return c;
 }
 
@@ -170,13 +255,24 @@ void write_comparison(const Comparison& c, const ForceCurve& sim,
   nlohmann::json j;
   j["simulation_file"] = sim.source;
   for (const ForceCurve& r : runs) j["measurement_files"].push_back(r.source);
+  nlohmann::json notes = nlohmann::json::array();
+  for (const ForceCurve& r : runs) {
+    for (const std::string& n : r.notes) notes.push_back(r.source + ": " + n);
+  }
+  for (const std::string& n : sim.notes) notes.push_back(sim.source + ": " + n);
+  j["notes"] = notes;
   j["range_mm"] = {1e3 * c.x.front(), 1e3 * c.x.back()};
   j["samples"] = c.x.size();
+  j["peak_rule"] = c.peak_rule;
   j["simulation_peak_force_N"] = c.sim_peak;
   j["simulation_peak_displacement_mm"] = 1e3 * c.sim_peak_x;
   j["mean_peak_force_N"] = c.mean_peak;
   j["mean_peak_displacement_mm"] = 1e3 * c.mean_peak_x;
   j["peak_force_error_percent"] = 100 * c.peak_error;
+  j["simulation_max_force_N"] = c.sim_max;
+  j["simulation_max_displacement_mm"] = 1e3 * c.sim_max_x;
+  j["mean_max_force_N"] = c.mean_max;
+  j["mean_max_displacement_mm"] = 1e3 * c.mean_max_x;
   j["rms_error_N"] = c.rms_error;
   j["max_error_N"] = c.max_error;
   j["max_error_displacement_mm"] = 1e3 * c.max_error_x;
@@ -189,12 +285,18 @@ void write_comparison(const Comparison& c, const ForceCurve& sim,
   p.y_label = "force (N)";
   std::vector<double> x_mm;
   for (double x : c.x) x_mm.push_back(1e3 * x);
+  p.bands.push_back({"measured spread (min - max)", x_mm, c.min, c.max});
   p.series.push_back({"simulation", x_mm, c.simulation});
   for (size_t k = 0; k < c.runs.size(); ++k) {
     p.series.push_back({fmt::format("measurement {}", k + 1), x_mm, c.runs[k]});
   }
   p.series.push_back({"measured mean", x_mm, c.mean});
   p.series.push_back({"difference (simulation - mean)", x_mm, c.difference});
+  const char* what = c.peak_rule == "deployment" ? "deployment peak" : "largest force";
+  p.points.push_back(
+      {1e3 * c.sim_peak_x, c.sim_peak, fmt::format("simulation {} {:.4g} N", what, c.sim_peak)});
+  p.points.push_back({1e3 * c.mean_peak_x, c.mean_peak,
+                      fmt::format("measured {} {:.4g} N", what, c.mean_peak), false});
   write_plot(dir + "/comparison.png", p);
 }
 

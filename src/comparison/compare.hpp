@@ -3,6 +3,7 @@
 // difference curve and the error at the peak force. docs/compare.md gives the CSV format.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,13 +15,17 @@ struct ForceCurve {
   std::vector<double> x;           ///< displacement, m, strictly increasing
   std::vector<double> force;       ///< N
   std::string x_column, y_column;  ///< header names used
+  std::vector<std::string> notes;  ///< e.g. a column without a unit suffix read in mm or N
 };
 
-/// Reads a curve. Columns: `x_column` / `y_column` when given, else the first column whose
-/// name ends in `_mm` or `_m` (displacement) and the first ending in `_N` or `_mN` (force);
-/// the suffix sets the unit. '#' starts a comment, blank lines are skipped. Throws
-/// InputError(file, "line N ..." or "header", ...) on a missing column, a value that is not a
-/// finite number, a displacement that does not strictly increase, or fewer than 4 points.
+/// Reads a curve. Cells are separated by ',' or, when the header line holds a ';', by ';'
+/// (a ',' is then a decimal comma). Columns: `x_column` / `y_column` when given, else the
+/// first column whose name ends in `_mm` or `_m` (displacement) and the first ending in `_N`
+/// or `_mN` (force), else the first column and the first other one; the suffix sets the unit,
+/// a column without one is read in mm or N (a note says so). '#' starts a comment, blank
+/// lines are skipped. Throws InputError(file, "line N ..." or "header", ...) on a missing
+/// column, a header of numbers, a value that is not a finite number or whose magnitude
+/// reaches 1e100 (SI), a displacement that does not strictly increase, or fewer than 4 points.
 ForceCurve read_force_curve(const std::string& path, const std::string& x_column = "",
                             const std::string& y_column = "");
 
@@ -32,19 +37,32 @@ struct Comparison {
   std::vector<double> mean, stddev;       ///< mean and sample standard deviation, N
   std::vector<double> min, max;           ///< envelope of the measurements, N
   std::vector<double> difference;         ///< simulation - mean, N
-  double sim_peak = 0, sim_peak_x = 0;    ///< largest simulated force and where, N and m
-  double mean_peak = 0, mean_peak_x = 0;  ///< largest mean force and where
+  /// "deployment" when both curves have a deployment peak (probes/deployment_peak.hpp),
+  /// else "largest" (the largest force of each curve on the grid).
+  std::string peak_rule = "deployment";
+  double sim_peak = 0, sim_peak_x = 0;    ///< simulated peak force and where, N and m
+  double mean_peak = 0, mean_peak_x = 0;  ///< peak of the measured mean and where
   double peak_error = 0;  ///< (sim_peak - mean_peak) / mean_peak (paper's figure of merit)
-  double rms_error = 0;   ///< sqrt(mean(difference^2)) over the grid, N
+  double sim_max = 0, sim_max_x = 0;      ///< largest simulated force on the grid and where
+  double mean_max = 0, mean_max_x = 0;    ///< largest mean force on the grid and where
+  double rms_error = 0;                   ///< sqrt(mean(difference^2)) over the grid, N
   double max_error = 0, max_error_x = 0;  ///< largest |difference| and where, N and m
 };
 
+/// Displacement window of a comparison, m: the grid is cut to it (infinite: no cut).
+struct CompareWindow {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+};
+
 /// Resamples every curve with a not-a-knot cubic spline at `samples` equally spaced points
-/// of the common displacement range [max of the starts, min of the ends] and compares.
-/// Throws InputError when there is no measurement, the ranges do not overlap or
-/// samples < 2.
+/// of the common displacement range [max of the starts, min of the ends] cut to `window`,
+/// and compares; the peaks are deployment peaks (find_deployment_peak over the grid), or the
+/// largest forces when either curve has none. Throws InputError when there is no
+/// measurement, the ranges do not overlap (or miss the window), samples < 2, or a result is
+/// not finite.
 Comparison compare_curves(const ForceCurve& simulation, const std::vector<ForceCurve>& runs,
-                          int samples = 201);
+                          int samples = 201, const CompareWindow& window = {});
 
 /// Writes `dir`/comparison.csv, comparison.json and, when `plot`, comparison.png (Fig. 23:
 /// simulation, each measurement, mean and difference). Creates `dir` if needed.

@@ -121,9 +121,9 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
     const bool right_half = pt.x > 0.5 * (x_lo + x_hi);
     g += fmt::format(
         "set label {} {} at {:.10g}, {:.10g} {} point pt 7 ps 1.6 lc rgb '#000000' offset char "
-        "{}, 1 front boxed font ',10' tc rgb '#000000'\n",
+        "{}, {} front boxed font ',10' tc rgb '#000000'\n",
         spec.markers.size() + p + 1, gp_quote(pt.label), pt.x, pt.y, right_half ? "right" : "left",
-        right_half ? -1 : 1);
+        right_half ? -1 : 1, pt.above ? 1 : -1);
   }
   g += "plot \\\n";
   const std::size_t bands = spec.bands.size();

@@ -23,6 +23,7 @@ struct PlotMarker {
 struct PlotPoint {
   double x = 0, y = 0;
   std::string label;
+  bool above = true;  ///< label above the point, else below (two marks close together)
 };
 
 /// A shaded band between two curves over the same abscissae (e.g. a measured spread).
