@@ -30,7 +30,8 @@ DeploymentPeak find_deployment_peak(const std::vector<double>& x, const std::vec
       low = std::min(low, stack.back().low);
       stack.pop_back();
     }
-    if (force[i] - low >= needed && (!best.found || force[i] >= best.force)) {
+    const bool rose_to_it = i > lo && force[i] >= force[i - 1];
+    if (rose_to_it && force[i] - low >= needed && (!best.found || force[i] >= best.force)) {
       best = {true, force[i], x[i], i};
     }
     stack.push_back({i, std::min(force[i], low)});

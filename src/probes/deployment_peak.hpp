@@ -21,10 +21,11 @@ struct DeploymentPeak {
 };
 
 /// Rule: among the samples with window_lo <= x <= window_hi, a sample is a peak when the
-/// force afterwards falls by at least `drop` x (largest - smallest force in the window)
-/// before it rises above the sample's own force again, all inside the window. The deployment
-/// peak is the largest such force (the first of equal ones). A force still rising at the
-/// window's end (a strip pulled taut) is therefore never a peak. `x` must be sorted.
+/// force rises to it (it is not the window's first sample and not below the one before) and
+/// afterwards falls by at least `drop` x (largest - smallest force in the window) before it
+/// rises above the sample's own force again, all inside the window. The deployment peak is
+/// the largest such force (the first of equal ones). A force still rising at the window's
+/// end (a strip pulled taut) is therefore never a peak. `x` must be sorted.
 DeploymentPeak find_deployment_peak(const std::vector<double>& x, const std::vector<double>& force,
                                     double window_lo, double window_hi,
                                     double drop = kDefaultPeakDrop);
