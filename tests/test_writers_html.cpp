@@ -107,3 +107,27 @@ TEST(HtmlAnimation, RefusesACurveThatDoesNotMatchTheFrames) {
                        "drive displacement [m]");
   EXPECT_TRUE(fs::exists(path));
 }
+
+TEST(HtmlAnimation, UnfinishedRunShowsABannerAndPeaksAreMarked) {
+  // Former defect: the page of a diverged or interrupted run looked like a finished one.
+  auto s = writer_test::make_zigzag_scene(6);
+  const writer_test::TempDir tmp("html_banner");
+  const fs::path path = tmp / "warned.html";
+  HtmlAnnotations notes{"RUN DIVERGED - not finished: <step> & more", {{2.5, 0.1, "peak 0.1 N"}}};
+  write_html_animation(path.string(), "t", s.model, s.frames, s.curve, "time [s]", notes);
+  const std::string page = slurp(path);
+  EXPECT_NE(page.find("<div id=\"runwarning\" role=\"alert\">RUN DIVERGED - not finished: "
+                      "&lt;step&gt; &amp; more</div>"),
+            std::string::npos);
+  const nlohmann::json d = embedded_data(page);
+  ASSERT_EQ(d["curve"]["marks"].size(), 1u);
+  EXPECT_EQ(d["curve"]["marks"][0]["label"], "peak 0.1 N");
+  EXPECT_NEAR(d["curve"]["marks"][0]["x"].get<double>(), 2.5, 0);
+  // A finished run: the banner element is empty (hidden by CSS :empty).
+  write_html_animation(path.string(), "t", s.model, s.frames, s.curve);
+  EXPECT_NE(slurp(path).find("<div id=\"runwarning\" role=\"alert\"></div>"), std::string::npos);
+  notes.marks[0].y = NAN;
+  EXPECT_THROW(
+      write_html_animation(path.string(), "t", s.model, s.frames, s.curve, "time [s]", notes),
+      InputError);
+}

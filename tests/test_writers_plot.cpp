@@ -111,3 +111,36 @@ TEST(PlotWriter, ReportsGnuplotErrorsAndBadInput) {
   spec.series[0].style = "lines; system 'touch /tmp/x'";
   EXPECT_THROW(write_plot(png.string(), spec), std::invalid_argument);
 }
+
+TEST(PlotWriter, UnfinishedRunBannerBandAndPeakPoints) {
+  // Former defect: the plot of a diverged or interrupted run looked like a finished one.
+  const writer_test::TempDir tmp("plot_warning");
+  PlotSpec spec = sample_spec();
+  spec.warning = "RUN INTERRUPTED - not finished, results end early";
+  spec.points = {{20.0, 0.7, "deployment peak 0.7 N"}, {58.0, 0.8, "largest force 0.8 N", false}};
+  PlotBand band{"measured spread", {}, {}, {}};
+  for (double x : spec.series[0].x) {
+    band.x.push_back(x);
+    band.lower.push_back(0.1);
+    band.upper.push_back(0.2);
+  }
+  spec.bands = {band};
+  const fs::path svg = tmp / "warned.svg";
+  write_plot(svg.string(), spec);
+  const std::string text = slurp(svg);
+  EXPECT_NE(text.find("RUN INTERRUPTED"), std::string::npos);
+  EXPECT_NE(text.find("deployment peak 0.7 N"), std::string::npos);
+  EXPECT_NE(text.find("largest force 0.8 N"), std::string::npos);
+  const std::string gp = slurp(svg.string() + ".gp");
+  EXPECT_NE(gp.find("filledcurves"), std::string::npos);
+  // The band is block 0, the series follow it.
+  EXPECT_NE(gp.find("index 0 using 1:2:3"), std::string::npos);
+  EXPECT_NE(gp.find("index 1 using 1:2 with lines"), std::string::npos);
+  // Point labels face the middle: the right-hand one is right-aligned, the other left.
+  EXPECT_NE(gp.find("'largest force 0.8 N' at 58, 0.8 right"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("'deployment peak 0.7 N' at 20, 0.7 left"), std::string::npos) << gp;
+  // Legend outside the data area.
+  EXPECT_NE(gp.find("set key outside"), std::string::npos);
+  spec.bands[0].upper.pop_back();
+  EXPECT_THROW(write_plot(svg.string(), spec), std::invalid_argument);
+}
