@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   finseg::cli::register_identify(app);
   finseg::cli::register_compare(app);
   finseg::cli::register_pattern(app);
+  finseg::cli::register_overlay(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

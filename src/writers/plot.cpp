@@ -182,6 +182,24 @@ int run_gnuplot(const std::string& script_path, std::string& stderr_text) {
 
 }  // namespace
 
+PlotSpec overlay_spec(const std::string& title, const std::vector<OverlayRun>& runs) {
+  PlotSpec spec;
+  spec.title = title;
+  spec.x_label = "pull displacement [mm]";
+  spec.y_label = "gauge force [N]";
+  std::string unfinished;
+  for (const OverlayRun& r : runs) {
+    const bool ok = r.status == "ok";
+    spec.series.push_back({ok ? r.label : r.label + " [" + r.status + "]", r.x_mm, r.force_N});
+    if (!ok) unfinished += (unfinished.empty() ? "" : ", ") + r.label + " (" + r.status + ")";
+    if (r.has_peak) {
+      spec.points.push_back({r.peak_x_mm, r.peak_N, fmt::format("{:.3g} N", r.peak_N)});
+    }
+  }
+  if (!unfinished.empty()) spec.warning = "NOT FINISHED: " + unfinished;
+  return spec;
+}
+
 void write_plot(const std::string& path, const PlotSpec& spec) {
   const bool png = ends_with(path, ".png");
   if (!png && !ends_with(path, ".svg")) {

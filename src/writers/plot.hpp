@@ -43,6 +43,20 @@ struct PlotSpec {
   std::string warning;
 };
 
+/// One run of an overlay: its force curve and how it ended.
+struct OverlayRun {
+  std::string label;                  ///< legend entry, e.g. the run's title
+  std::string status = "ok";          ///< summary.json's status; other than "ok": marked
+  std::vector<double> x_mm, force_N;  ///< pull displacement, mm; force, N
+  double peak_x_mm = 0, peak_N = 0;   ///< deployment peak
+  bool has_peak = false;
+};
+
+/// The force curves of several runs in one figure (`finseg overlay`): one line per run, its
+/// deployment peak marked, a run that did not finish named so in its legend entry and in a
+/// red banner.
+PlotSpec overlay_spec(const std::string& title, const std::vector<OverlayRun>& runs);
+
 /// Writes `path` (.png or .svg, chosen by extension); the data and the gnuplot script are
 /// kept beside it as path + ".dat"/".gp". Throws std::runtime_error if gnuplot fails.
 void write_plot(const std::string& path, const PlotSpec& spec);

@@ -275,7 +275,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
       if (&t == first_drive && o.phases.enabled) spec.markers = phase_markers(phases);
       for (const ChartMark& m : peak_marks(probes[t.name]))
         spec.points.push_back({m.x, m.y, m.label});
-      spec.warning = warning;
+      // The full message is in summary.json and on the HTML page; a plot line must fit.
+      spec.warning = warning.size() > 110 ? warning.substr(0, 107) + "..." : warning;
       optional_output(report, t.name + ".png",
                       [&] { write_plot((fs::path(dir) / (t.name + ".png")).string(), spec); });
     }
