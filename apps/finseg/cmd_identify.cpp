@@ -2,7 +2,6 @@
 // (section 3). docs/crease-data.md describes the files and the formulas.
 #include <fmt/format.h>
 
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,6 +10,7 @@
 #include "core/error.hpp"
 #include "identification/bending.hpp"
 #include "identification/crease.hpp"
+#include "writers/atomic_write.hpp"
 #include "writers/plot.hpp"
 
 namespace finseg::cli {
@@ -63,20 +63,21 @@ void run_bending(const BendingOptions& o) {
   if (r.youngs_modulus)
     fmt::print("Young's modulus 12 EI/(b t^3)     = {:.6g} Pa\n", *r.youngs_modulus);
   if (!o.out.empty()) {
-    std::ofstream out(o.out);
-    if (!out) throw InputError(o.out, "file", "cannot write");
-    out << fmt::format(
-        "# finseg identify bending {}\n"
-        "compliance_m_per_N: {:.17g}\n"
-        "length_m: {:.17g}\n"
-        "bending_rigidity_continuum_Nm2: {:.17g}\n"
-        "segments: {}\n"
-        "bending_rigidity_chain_Nm2: {:.17g}\n"
-        "joint_stiffness_Nm_per_rad: {:.17g}\n",
-        d.source, r.compliance, r.length, r.EI_continuum, r.segments, r.EI_chain,
-        r.joint_stiffness);
-    if (r.youngs_modulus) out << fmt::format("youngs_modulus_Pa: {:.17g}\n", *r.youngs_modulus);
-    fmt::print("wrote {}\n", o.out);
+    std::string yaml = fmt::format(
+        "# finseg identify bending {}: tip compliance x/F = {:.9g} m/N, free length {:.9g} m\n"
+        "# continuum EI = L^3/(3c) = {:.9g} N m^2; joint stiffness k = EI_chain/h = {:.9g} N "
+        "m/rad\n",
+        d.source, r.compliance, r.length, r.EI_continuum, r.joint_stiffness);
+    if (r.youngs_modulus)
+      yaml += fmt::format("# Young's modulus 12 EI/(b t^3) = {:.9g} Pa\n", *r.youngs_modulus);
+    yaml += fmt::format(
+        "# Scene fragment (docs/scene.md, `stiffness`): EI_chain reproduces the measured\n"
+        "# compliance with {} cells along the free length (docs/crease-data.md).\n"
+        "stiffness:\n"
+        "  bending_rigidity: {:.17g}   # N m^2 (EI_chain, {} cells)\n",
+        r.segments, r.EI_chain, r.segments);
+    write_file_atomically(o.out, yaml);
+    fmt::print("wrote {} (scene fragment: stiffness.bending_rigidity)\n", o.out);
   }
 }
 
@@ -127,7 +128,8 @@ void register_identify(CLI::App& app) {
   bend->add_option("--thickness", b->thickness, "strip thickness, m (for Young's modulus)");
   bend->add_option("--segments", b->segments, "cells N of the model's cantilever")
       ->check(CLI::Range(1, 1000000));
-  bend->add_option("--out", b->out, "write the results as YAML key: value lines");
+  bend->add_option("--out", b->out,
+                   "write a scene fragment (stiffness: bending_rigidity: EI_chain) to FILE");
   bend->callback([b] { run_bending(*b); });
 
   auto c = std::make_shared<CreaseOptions>();

@@ -61,6 +61,8 @@ PlotSpec crease_plot(const CreaseIdentification& id, SplineEnds ends) {
     points.style = "points";
     points.x = c.angle_deg;
     points.y = c.moment;
+    // One colour per curve, its fitted line and its measured points alike.
+    line.colour = points.colour = static_cast<int>(p.series.size() / 2);
     p.series.push_back(std::move(line));
     p.series.push_back(std::move(points));
   }

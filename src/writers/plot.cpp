@@ -69,8 +69,9 @@ std::string data_file(const PlotSpec& spec) {
 
 std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
                    const std::string& dat_path) {
-  static const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
-                                   "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+  static const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
+                                   "#e377c2", "#17becf", "#7f7f7f", "#bcbd22", "#393b79", "#e6550d",
+                                   "#31a354", "#de2d8f", "#6b6ecf", "#000000"};
   std::string g = "# finseg plot script; to redraw, run in this folder: gnuplot <this file>\n";
   if (png) {
     g += "set terminal pngcairo size 1200,750 enhanced font 'DejaVu Sans,12' "
@@ -135,9 +136,11 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
   }
   for (std::size_t s = 0; s < spec.series.size(); ++s) {
     const PlotSeries& ser = spec.series[s];
-    g += fmt::format("  {} index {} using 1:2 with {} lt {} title {}{}\n", gp_quote(dat_path),
-                     bands + s, ser.style, s % std::size(kColours) + 1, gp_quote(ser.title),
-                     s + 1 < spec.series.size() ? ", \\" : "");
+    g += fmt::format(
+        "  {} index {} using 1:2 with {} lt {} title {}{}\n", gp_quote(dat_path), bands + s,
+        ser.style,
+        (ser.colour >= 0 ? static_cast<std::size_t>(ser.colour) : s) % std::size(kColours) + 1,
+        gp_quote(ser.title), s + 1 < spec.series.size() ? ", \\" : "");
   }
   g += "unset output\n";
   return g;

@@ -11,6 +11,7 @@ struct PlotSeries {
   std::string title;
   std::vector<double> x, y;
   std::string style = "lines";  ///< gnuplot style: "lines", "points", "linespoints"
+  int colour = -1;  ///< palette index (16 distinct colours, then repeated); -1: the position
 };
 
 /// A vertical marker line with a label (e.g. a deployment-phase boundary).
