@@ -2,6 +2,7 @@
 // atomically) that `finseg run` reads back to the model the generators build.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -146,6 +147,9 @@ void register_zigzag(CLI::App* gen) {
   c->add_option("--pull-step", s.pull_step, "m per equilibrium");
   c->add_option("--pull-travel", s.pull_travel, "m (0: default)");
   c->add_option("--gauge-stiffness", s.gauge_stiffness, "N/m");
+  c->add_option("--pull-speed", o->z.pull_speed,
+                "m/s: dynamic solvers pull at this speed (default: the travel in 1 s); "
+                "without --t-end, t_end = travel / speed");
   c->add_option("--crease-law", o->z.crease_law_file, "measured crease data file for all creases")
       ->check(CLI::ExistingFile);
   c->add_option("--pressing-time", o->z.pressing_time,
@@ -157,7 +161,8 @@ void register_zigzag(CLI::App* gen) {
   c->add_flag("--no-gravity", o->no_gravity, "no gravity");
   c->add_flag("--no-contact", o->no_contact, "no contact between panels");
   add_solver_options(c, *o);
-  c->callback([o] {
+  c->callback([o, c] {
+    const bool t_end_given = c->count("--t-end") > 0;
     ZigzagSpec& spec = o->z.spec;
     spec.fixed_panels = parse_ints(o->fixed_panels, "--fixed-panels");
     spec.overrides.bending_rigidity = o->bending_rigidity;
@@ -177,6 +182,14 @@ void register_zigzag(CLI::App* gen) {
     ZigzagSpec check = spec;
     check.fold_angle = o->z.fold_angle_deg * kDegToRad;
     validate(check, "<cli>");
+    if (o->z.pull_speed) {
+      const double v = *o->z.pull_speed;
+      if (!(v > 0 && std::isfinite(v))) {
+        throw InputError("<cli>", "--pull-speed", fmt::format("{} m/s; must be finite and > 0", v));
+      }
+      const double travel = spec.pull_travel > 0 ? spec.pull_travel : zigzag_default_travel(check);
+      if (!t_end_given) o->settings.t_end = travel / v;
+    }
     emit(o->out, zigzag_scene(o->z, o->settings));
   });
 }

@@ -145,6 +145,9 @@ std::string zigzag_scene(const ZigzagSceneOptions& o, const SolverSettings& solv
       "  gauge_stiffness: {}   # N/m\n",
       s.pulled_crease, s.pulled_crease, s.pulled_crease + 1, vec(s.pull_direction_W),
       num(s.pull_step), num(s.pull_travel), num(s.gauge_stiffness));
+  if (o.pull_speed) {
+    y += fmt::format("  pull_speed: {}   # m/s (dynamic solvers)\n", num(*o.pull_speed));
+  }
   y += solver_section(solver);
   return y;
 }

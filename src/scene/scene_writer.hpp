@@ -23,6 +23,7 @@ struct ZigzagSceneOptions {
   std::string crease_law_file;          ///< measured crease data for every crease (empty: default)
   std::optional<double> pressing_time;  ///< s: which measured pressing time (interpolated)
   std::optional<double> crease_stiffness;  ///< N m/rad: linear crease resting at the fold
+  std::optional<double> pull_speed;        ///< m/s of the dynamic solvers' pull (zigzag.pull_speed)
 };
 
 /// The zigzag strip scene: every ZigzagSpec field written out explicitly.
