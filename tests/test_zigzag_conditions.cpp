@@ -56,6 +56,12 @@ double expect_full_deployment(int n, double max_penetration) {
   EXPECT_LT(r.max_penetration, max_penetration) << "condition " << n;
   EXPECT_LE(r.phases.initial_deformation, r.phases.contact);
   EXPECT_LE(r.phases.contact, r.phases.bending);
+  // The deployment peak is the hump after the valleys meet, in the first quarter of the
+  // deployed travel, not the taut rise at the end (issue 14 item 1).
+  EXPECT_TRUE(r.deployment_peak.found) << "condition " << n;
+  EXPECT_GT(r.deployment_peak.x, r.phases.contact) << "condition " << n;
+  EXPECT_LT(r.deployment_peak.x, 0.25 * m.drives[0].deployed_at) << "condition " << n;
+  EXPECT_LE(r.deployment_peak.force, r.peak_force) << "condition " << n;
   return r.max_penetration;
 }
 
