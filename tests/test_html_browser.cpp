@@ -77,7 +77,11 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   const fs::path dir = tmp.path();
   const auto s = writer_test::make_zigzag_scene(40);
   const fs::path page = dir / "zigzag.html";
-  write_html_animation(page.string(), "Zigzag strip (browser test)", s.model, s.frames, s.curve);
+  // With a run-status banner and a chart mark, so that their code runs in the browser too.
+  const HtmlAnnotations notes{"RUN INTERRUPTED - not finished",
+                              {{s.curve.x[10], s.curve.y[10], "deployment peak"}}};
+  write_html_animation(page.string(), "Zigzag strip (browser test)", s.model, s.frames, s.curve,
+                       "time [s]", notes);
 
   int status = 0;
   const std::string dom =
@@ -88,6 +92,7 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
 
   EXPECT_EQ(attr_of_status(dom, "data-error"), "");
   EXPECT_EQ(attr_of_status(dom, "data-frames"), "40");
+  EXPECT_NE(dom.find("role=\"alert\">RUN INTERRUPTED - not finished</div>"), std::string::npos);
   // Playing: the clock advanced frames (30 frames/s for about 3 s of virtual time).
   EXPECT_GT(std::stoi(attr_of_status(dom, "data-advanced")), 10);
   EXPECT_EQ(attr_of_status(dom, "data-playing"), "1");
