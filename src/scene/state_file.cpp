@@ -264,7 +264,10 @@ StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,
 }
 
 void write_state_file(const std::string& path, const Model& model, const StateSnapshot& snapshot) {
-  write_file_atomically(path, state_json(model, snapshot).dump(1) + "\n");
+  write_file_atomically(
+      path,
+      state_json(model, snapshot).dump(1, ' ', false, nlohmann::json::error_handler_t::replace) +
+          "\n");
 }
 
 StateSnapshot read_state_file(const std::string& path, const Model& model) {

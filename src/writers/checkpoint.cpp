@@ -160,7 +160,8 @@ void write_checkpoint(const std::string& dir, const Model& model, const StateSna
                       const RunRecorder& rec) {
   json j = state_json(model, snapshot);
   j["run"] = recorded_json(rec);
-  write_file_atomically((std::filesystem::path(dir) / kCheckpointFile).string(), j.dump() + "\n");
+  write_file_atomically((std::filesystem::path(dir) / kCheckpointFile).string(),
+                        j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 StateSnapshot read_checkpoint(const std::string& path, const Model& model, RunRecorder& rec) {

@@ -156,21 +156,26 @@ void remove_previous_run(const std::string& dir, const std::vector<std::string>&
 }
 
 void write_manifest(const std::string& dir, const std::vector<std::string>& files) {
-  std::vector<std::string> list;
+  std::set<std::string> list;
   for (const std::string& f : files) {
-    if (f != "vtk/frames.pvd") {
-      list.push_back(f);
-      continue;
-    }
+    list.insert(f);
+    // Files written beside an entry (a plot's .dat and .gp): "<entry>.*"; the VTK series:
+    // every "frames*" file in vtk/.
+    const fs::path p = fs::path(dir) / f;
+    const bool vtk = f == "vtk/frames.pvd";
+    const std::string prefix = vtk ? "frames" : p.filename().string() + ".";
     std::error_code ec;
-    for (const auto& e : fs::directory_iterator(fs::path(dir) / "vtk", ec)) {
+    for (const auto& e : fs::directory_iterator(p.parent_path(), ec)) {
       const std::string name = e.path().filename().string();
-      if (e.is_regular_file() && name.rfind("frames", 0) == 0) list.push_back("vtk/" + name);
+      if (e.is_regular_file() && name.rfind(prefix, 0) == 0)
+        list.insert(
+            fs::path(f).parent_path().empty() ? name : (fs::path(f).parent_path() / name).string());
     }
   }
-  std::sort(list.begin(), list.end());
-  list.push_back(kManifestFile);
-  const nlohmann::json j{{"written_by", "finseg run"}, {"files", list}};
+  list.erase(kManifestFile);
+  std::vector<std::string> sorted(list.begin(), list.end());
+  sorted.push_back(kManifestFile);
+  const nlohmann::json j{{"written_by", "finseg run"}, {"files", sorted}};
   write_file_atomically((fs::path(dir) / kManifestFile).string(), j.dump(1) + "\n");
 }
 
