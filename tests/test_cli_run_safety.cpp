@@ -38,13 +38,13 @@ std::vector<std::vector<double>> csv_numbers(const std::string& text) {
 }
 
 // A cantilever under a tip load; `t_end` sets how long the dynamic run takes.
-// Outputs every t_end / 100 s, at most every ms.
+// Outputs every t_end / 20 s, at most every ms.
 void write_cantilever(const TempDir& dir, const std::string& solver, double t_end,
                       const std::string& file = "c.yaml") {
   const auto r =
       run_finseg(dir, "gen cantilever --segments 8 --tip-force 0,0,-1e-3 --solver " + solver +
                           " --t-end " + std::to_string(t_end) + " --output-interval " +
-                          std::to_string(std::min(1e-3, t_end / 100)) + " --out " + file);
+                          std::to_string(std::min(1e-3, t_end / 20)) + " --out " + file);
   ASSERT_EQ(r.code, 0) << r.err;
 }
 
@@ -129,12 +129,12 @@ std::vector<double> final_state(const TempDir& dir, const std::string& out) {
 // An interrupted and resumed run ends where an uninterrupted one does, with the same rows.
 void expect_resume_matches(const std::string& solver) {
   TempDir dir;
-  write_cantilever(dir, solver, 0.05);
+  write_cantilever(dir, solver, 0.02);
   auto r = run_finseg(dir, "run c.yaml --out whole --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   ASSERT_EQ(interrupt_run(dir, SIGINT, "parts"), 130) << slurp(dir / "child_stderr.txt");
   const std::size_t before = summary(dir, "parts")["outputs"];
-  ASSERT_LT(before, 51u) << "the signal came after the run's end: nothing to resume";
+  ASSERT_LT(before, 21u) << "the signal came after the run's end: nothing to resume";
   r = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(summary(dir, "parts")["status"], "ok");
@@ -287,6 +287,17 @@ TEST(CliRunSafety, ProgressLinesWhenStderrIsNotATerminal) {
   EXPECT_EQ(r.err.find('\r'), std::string::npos);  // plain lines, no redrawing
   r = run_finseg(dir, "run c.yaml --out out --quiet --progress-every 0");
   EXPECT_EQ(r.err, "");
+}
+
+// A static load-only run reports its load steps, not only its end.
+TEST(CliRunSafety, StaticLoadSteppingReportsProgress) {
+  TempDir dir;
+  write_cantilever(dir, "static", 1);
+  replace_line(dir / "c.yaml", "load_steps: 1", "load_steps: 4");
+  const auto r = run_finseg(dir, "run c.yaml --out out --progress-every 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("finseg: [ 25.0%] load 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("finseg: [100.0%] load 1"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "apps/finseg/commands.hpp"
 #include "apps/finseg/progress.hpp"
@@ -79,7 +80,8 @@ void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStat
 
 // The state the run starts from: the scene's initial state, DIR's checkpoint (--resume,
 // which also restores what was recorded) or any state file (--state).
-State starting_state(const RunOptions& o, Scene& scene, const std::string& hash, RunRecorder& rec) {
+State starting_state(const RunOptions& o, const Scene& scene, const std::string& hash,
+                     RunRecorder& rec) {
   if (o.resume && !o.state_file.empty())
     throw InputError("<cli>", "--resume", "continues DIR's own checkpoint: leave out --state");
   if (o.resume) {
@@ -96,9 +98,6 @@ State starting_state(const RunOptions& o, Scene& scene, const std::string& hash,
                        "the checkpoint was made from another scene (or the scene file changed "
                        "since): run without --resume");
     }
-    // The same step sizes as the interrupted run (explicit: fixed; implicit: the next one).
-    if (snap.state.solver.t == snap.state.t && snap.state.solver.dt > 0)
-      scene.solver.dt = snap.state.solver.dt;
     return snap.state;
   }
   if (!o.state_file.empty()) {
@@ -150,7 +149,7 @@ class Checkpointer {
 
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
-  Scene scene = read_scene(o.scene);
+  const Scene scene = read_scene(o.scene);
   const std::string hash = scene_hash(read_whole_file(o.scene));
   check_output_folder(o.out, scene);
   RecorderOptions ro;
@@ -159,6 +158,10 @@ void run_scene(const RunOptions& o) {
   for (int p : scene.outputs.phases.panels) ro.watched_panels.push_back(p - 1);
   RunRecorder rec(scene.model, scene.solver, ro);
   State state = starting_state(o, scene, hash, rec);
+  // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
+  // the step it would have tried next). summary.json keeps the scene's settings.
+  SolverSettings settings = scene.solver;
+  if (o.resume && state.solver.t == state.t && state.solver.dt > 0) settings.dt = state.solver.dt;
   // Only this run's files in DIR from now on; a summary.json of a run from before manifests
   // must not make this one look complete either.
   remove_previous_run(
@@ -167,11 +170,12 @@ void run_scene(const RunOptions& o) {
   clear_stop_request();
   install_stop_handlers();
   ProgressLine progress(
-      progress_mode(o.quiet), [&] { return where(rec); }, o.progress_every);
+      progress_mode(o.quiet),
+      [&] { return fmt::format("{}, {} outputs", where(rec), rec.outputs()); }, o.progress_every);
   Checkpointer checkpoints(o, scene, hash);
   bool skip = o.resume;  // a resumed run's first output is the checkpoint's last one
   SolverStats stats = run_solver(
-      scene.model, state, scene.solver,
+      scene.model, state, settings,
       [&](const State& s, const BodyForces& f) {
         if (!std::exchange(skip, false)) rec.record(s, f);
         checkpoints.at_output(s, rec);
