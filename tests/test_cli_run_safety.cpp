@@ -114,6 +114,14 @@ TEST(CliRunSafety, SigtermStopsAtAnOutputAndKeepsEverything) {
   expect_interrupted_outputs(dir, "out");
 }
 
+void replace_line(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text = slurp(path);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), to);
+  spit(path, text);
+}
+
 // Final state of a run from its checkpoint.json (17 significant digits: exact doubles).
 std::vector<double> final_state(const TempDir& dir, const std::string& out) {
   const auto j = nlohmann::json::parse(slurp(dir / (out + "/checkpoint.json")));
@@ -130,6 +138,7 @@ std::vector<double> final_state(const TempDir& dir, const std::string& out) {
 void expect_resume_matches(const std::string& solver) {
   TempDir dir;
   write_cantilever(dir, solver, 0.02);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");  // frames are restored too
   auto r = run_finseg(dir, "run c.yaml --out whole --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   ASSERT_EQ(interrupt_run(dir, SIGINT, "parts"), 130) << slurp(dir / "child_stderr.txt");
@@ -147,6 +156,9 @@ void expect_resume_matches(const std::string& solver) {
   for (std::size_t i = 0; i < ra.size(); ++i) {
     for (std::size_t c = 0; c < ra[i].size(); ++c) EXPECT_NEAR(ra[i][c], rb[i][c], 1e-12);
   }
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames.pvd"), slurp(dir / "parts/vtk/frames.pvd"));
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames_00001.vtu"), slurp(dir / "parts/vtk/frames_00001.vtu"));
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames_00020.vtu"), slurp(dir / "parts/vtk/frames_00020.vtu"));
 }
 
 TEST(CliRunSafety, ResumedExplicitRunEqualsUninterruptedRun) {
@@ -205,14 +217,6 @@ void expect_refused_up_front(const TempDir& dir, const std::string& args,
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
   EXPECT_LT(wall, 30.0);  // not after the run (which would take far longer)
-}
-
-void replace_line(const std::string& path, const std::string& from, const std::string& to) {
-  std::string text = slurp(path);
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, from.size(), to);
-  spit(path, text);
 }
 
 TEST(CliRunSafety, InvalidUtf8TitleIsRefusedBeforeTheRun) {

@@ -40,7 +40,7 @@ State busy_state(const Model& m) {
                        {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false}};
   s.contact.p_W = s.p_W;
   s.contact.R_WB = s.R_WB;
-  s.solver = {s.t, 1e-6 / 3, s.t + 0.01, s.v_W, s.w_W};
+  s.solver = {1e-6 / 3, s.t + 0.01, 1.0 / 7, 123456789012, s.t, s.v_W, s.w_W};
   return s;
 }
 
@@ -85,6 +85,8 @@ TEST(StateFile, RoundTripIsExact) {
   EXPECT_EQ(q.solver.t, s.solver.t);
   EXPECT_EQ(q.solver.dt, s.solver.dt);
   EXPECT_EQ(q.solver.next_output, s.solver.next_output);
+  EXPECT_EQ(q.solver.t_start, s.solver.t_start);
+  EXPECT_EQ(q.solver.steps, s.solver.steps);
 }
 
 // The message of the InputError that parsing `j` throws ("" if none).

@@ -19,9 +19,11 @@ struct ElementHistory {
 /// What a dynamic solver carries from one step to the next besides the State proper, saved
 /// at each output so that a run continued from a checkpoint takes the same steps.
 struct SolverMemory {
-  double t = -1;                 ///< State::t when saved; ignored at any other time
   double dt = 0;                 ///< step the solver takes next, s (0: unknown)
   double next_output = 0;        ///< time of the next output, s
+  double t_start = 0;            ///< explicit: time of step 0 (t = t_start + steps dt), s
+  long steps = 0;                ///< explicit: steps taken since t_start
+  double t = -1;                 ///< State::t when saved; ignored at any other time
   std::vector<Vec3> f_W, tau_W;  ///< explicit: forces the next step starts from, N, N m
 };
 

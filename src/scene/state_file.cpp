@@ -173,6 +173,9 @@ void read_solver(const Reader& in, const json& j, std::size_t bodies, State& s) 
   s.solver.dt = in.number(in.key(m, "dt_s", "solver"), "solver.dt_s");
   if (s.solver.dt < 0) in.fail("solver.dt_s", "expected >= 0");
   s.solver.next_output = in.number(in.key(m, "next_output", "solver"), "solver.next_output");
+  s.solver.t_start = in.number(in.key(m, "t_start", "solver"), "solver.t_start");
+  s.solver.steps = in.integer(in.key(m, "steps", "solver"), "solver.steps");
+  if (s.solver.steps < 0) in.fail("solver.steps", "expected >= 0");
   const json& f = in.key(m, "f_W_N", "solver");
   const std::size_t n = f.is_array() && f.empty() ? 0 : bodies;
   s.solver.f_W = in.vecs(f, "solver.f_W_N", n);
@@ -222,6 +225,8 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
            {{"t", s.solver.t},
             {"dt_s", s.solver.dt},
             {"next_output", s.solver.next_output},
+            {"t_start", s.solver.t_start},
+            {"steps", s.solver.steps},
             {"f_W_N", vecs_json(s.solver.f_W)},
             {"tau_W_N_m", vecs_json(s.solver.tau_W)}}}};
 }

@@ -75,7 +75,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
   const double t0 = state.t;
   double next_output = resumed ? state.solver.next_output : t0 + every;
-  state.solver = {state.t, h, next_output, {}, {}};
+  state.solver = {h, next_output, t0, 0, state.t, {}, {}};
   on_output(state, f);
   stats.smallest_step = h;
   while (state.t < settings.t_end - 1e-12 * every) {
@@ -111,7 +111,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
     if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
       next_output += every;
-      state.solver = {state.t, h, next_output, {}, {}};
+      state.solver = {h, next_output, t0, 0, state.t, {}, {}};
       on_output(state, f);
       on_progress((state.t - t0) / (settings.t_end - t0));
     }
