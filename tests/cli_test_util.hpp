@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace finseg::test {
 
@@ -41,6 +42,22 @@ inline std::string slurp(const std::string& path) {
 
 inline void spit(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
+}
+
+/// Numbers of a CSV text's rows; its first line (the header) goes to `header`.
+inline std::vector<std::vector<double>> csv_rows(const std::string& text, std::string* header) {
+  std::stringstream in(text);
+  std::string line;
+  std::getline(in, *header);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> r;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) r.push_back(std::stod(cell));
+    rows.push_back(r);
+  }
+  return rows;
 }
 
 /// Result of one finseg invocation.

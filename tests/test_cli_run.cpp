@@ -13,24 +13,10 @@
 namespace finseg {
 namespace {
 
+using test::csv_rows;
 using test::run_finseg;
 using test::slurp;
 using test::TempDir;
-
-std::vector<std::vector<double>> csv_rows(const std::string& text, std::string* header) {
-  std::stringstream in(text);
-  std::string line;
-  std::getline(in, *header);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> r;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) r.push_back(std::stod(cell));
-    rows.push_back(r);
-  }
-  return rows;
-}
 
 // Linear beam theory with shear: w = P L^3 / (3 E I) + P L / (kappa G A).
 TEST(CliRun, CantileverTipMatchesLinearBeamTheory) {

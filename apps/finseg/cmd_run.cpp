@@ -1,26 +1,58 @@
-// finseg run SCENE --out DIR [--quiet]: runs a scene and writes its probes' CSV files,
-// optional VTK / HTML / plots and DIR/summary.json (docs/scene.md, "Run outputs").
+// finseg run SCENE --out DIR [--quiet] [--resume | --state FILE]: runs a scene and writes
+// its probes' CSV files, optional VTK / HTML / plots, DIR/summary.json, DIR/checkpoint.json
+// and DIR/manifest.json (docs/scene.md, "Run outputs"; docs/state-file.md).
 #include <fmt/format.h>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "apps/finseg/commands.hpp"
 #include "apps/finseg/progress.hpp"
+#include "core/error.hpp"
 #include "probes/recorder.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/state_file.hpp"
+#include "solvers/stop_request.hpp"
+#include "writers/atomic_write.hpp"
+#include "writers/checkpoint.hpp"
+#include "writers/output_folder.hpp"
 #include "writers/run_outputs.hpp"
 
 namespace finseg::cli {
 
 namespace {
 
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
 struct RunOptions {
-  std::string scene, out;
-  bool quiet = false;
+  std::string scene, out, state_file;
+  bool quiet = false, resume = false;
+  double checkpoint_every = 30;  // wall seconds between checkpoints (0: every output)
+  double progress_every = 5;     // wall seconds between progress lines off a terminal
 };
+
+volatile std::sig_atomic_t g_signal = 0;
+
+// Only sets flags (async-signal-safe); the run stops at its next output. SA_RESETHAND: a
+// second Ctrl-C ends the program at once.
+extern "C" void on_stop_signal(int sig) {
+  g_signal = sig;
+  request_stop();
+}
+
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
 
 std::string where(const RunRecorder& rec) {
   const double x = rec.last_abscissa();
@@ -51,27 +83,123 @@ void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStat
   }
 }
 
+// The state the run starts from: the scene's initial state, DIR's checkpoint (--resume,
+// which also restores what was recorded) or any state file (--state).
+State starting_state(const RunOptions& o, const Scene& scene, const std::string& hash,
+                     RunRecorder& rec) {
+  if (o.resume && !o.state_file.empty())
+    throw InputError("<cli>", "--resume", "continues DIR's own checkpoint: leave out --state");
+  if (o.resume) {
+    if (scene.solver.kind == SolverKind::Static) {
+      throw InputError("<cli>", "--resume",
+                       "static solver runs cannot be resumed (the load path restarts from zero); "
+                       "use --state DIR/checkpoint.json to start from its poses and history");
+    }
+    const std::string path = (fs::path(o.out) / kCheckpointFile).string();
+    if (!fs::exists(path)) throw InputError(path, "--resume", "no checkpoint to resume from");
+    StateSnapshot snap = read_checkpoint(path, scene.model, rec);
+    if (snap.scene_hash != hash) {
+      throw InputError(path, "scene_hash",
+                       "the checkpoint was made from another scene (or the scene file changed "
+                       "since): run without --resume");
+    }
+    return snap.state;
+  }
+  if (!o.state_file.empty()) {
+    State s = read_state_file(o.state_file, scene.model).state;
+    s.solver = SolverMemory{};  // a fresh run from those poses, with the scene's own steps
+    return s;
+  }
+  return initial_state(scene.model);
+}
+
+// Periodic checkpoints from the output callback; a checkpoint that cannot be written is a
+// warning (the run goes on and still writes its results).
+class Checkpointer {
+ public:
+  Checkpointer(const RunOptions& o, const Scene& scene, std::string hash)
+      : o_(o), scene_(scene), hash_(std::move(hash)), last_(Clock::now()) {}
+
+  void at_output(const State& s, const RunRecorder& rec) {
+    const bool due = o_.checkpoint_every <= 0 ||
+                     Clock::now() - last_ >= std::chrono::duration<double>(o_.checkpoint_every);
+    if (due || stop_requested()) write(s, rec);
+  }
+  void write(const State& s, const RunRecorder& rec) {
+    try {
+      write_checkpoint(o_.out, scene_.model, {s, hash_}, rec);
+      write_manifest(o_.out, {kCheckpointFile});
+    } catch (const std::exception& e) {
+      if (!warned_) fmt::print(stderr, "finseg: warning: checkpoint not written: {}\n", e.what());
+      warned_ = true;
+    }
+    last_ = Clock::now();
+  }
+
+ private:
+  const RunOptions& o_;
+  const Scene& scene_;
+  std::string hash_;
+  Clock::time_point last_;
+  bool warned_ = false;
+};
+
+[[noreturn]] void stop_interrupted(const RunOptions& o, const RunRecorder& rec) {
+  const int sig = g_signal;
+  fmt::print(stderr, "finseg: interrupted by {}: kept the {} outputs recorded ({} to {})\n",
+             sig == SIGTERM ? "SIGTERM" : "SIGINT", rec.outputs(), where(rec), o.out);
+  fmt::print(stderr, "finseg: continue with: finseg run {} --out {} --resume\n", o.scene, o.out);
+  throw ExitStatus{sig == SIGTERM ? 143 : 130};
+}
+
 void run_scene(const RunOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const Scene scene = read_scene(o.scene);
-  // A summary.json from an earlier run must not make this one look complete.
-  std::filesystem::remove(std::filesystem::path(o.out) / "summary.json");
+  const std::string hash = scene_hash(read_whole_file(o.scene));
+  check_output_folder(o.out, scene);
   RecorderOptions ro;
   ro.frames = scene.outputs.vtk || scene.outputs.html;
   ro.phases = scene.outputs.phases.enabled;
   for (int p : scene.outputs.phases.panels) ro.watched_panels.push_back(p - 1);
   RunRecorder rec(scene.model, scene.solver, ro);
-  State state = initial_state(scene.model);
-  ProgressLine progress(!o.quiet && stderr_is_terminal(), [&] { return where(rec); });
-  const SolverStats stats = run_solver(
-      scene.model, state, scene.solver,
-      [&](const State& s, const BodyForces& f) { rec.record(s, f); },
+  State state = starting_state(o, scene, hash, rec);
+  // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
+  // the step it would have tried next). summary.json keeps the scene's settings.
+  SolverSettings settings = scene.solver;
+  if (o.resume && state.solver.t == state.t && state.solver.dt > 0) settings.dt = state.solver.dt;
+  // Only this run's files in DIR from now on; a summary.json of a run from before manifests
+  // must not make this one look complete either.
+  remove_previous_run(
+      o.out, o.resume ? std::vector<std::string>{kCheckpointFile} : std::vector<std::string>{});
+  fs::remove(fs::path(o.out) / "summary.json");
+  clear_stop_request();
+  install_stop_handlers();
+  ProgressLine progress(
+      progress_mode(o.quiet),
+      [&] { return fmt::format("{}, {} outputs", where(rec), rec.outputs()); }, o.progress_every);
+  Checkpointer checkpoints(o, scene, hash);
+  bool skip = o.resume;  // a resumed run's first output is the checkpoint's last one
+  SolverStats stats = run_solver(
+      scene.model, state, settings,
+      [&](const State& s, const BodyForces& f) {
+        if (!std::exchange(skip, false)) rec.record(s, f);
+        checkpoints.at_output(s, rec);
+      },
       [&](double fraction) { progress.update(fraction); });
   progress.finish();
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const RunReport report = write_run_outputs(o.out, scene, rec, stats, wall);
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  if (stats.status == "ok") checkpoints.write(state, rec);  // the final state (docs/state-file.md)
+  if (stats.status == kInterruptedStatus) {
+    stats.message = fmt::format("interrupted by {} at {}; continue with --resume",
+                                g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec));
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  RunReport report = write_run_outputs(o.out, scene, rec, stats, wall);
+  if (fs::exists(fs::path(o.out) / kCheckpointFile)) report.files.push_back(kCheckpointFile);
+  write_manifest(o.out, report.files);
   for (const std::string& w : report.warnings) fmt::print(stderr, "finseg: warning: {}\n", w);
+  if (stats.status == kInterruptedStatus) stop_interrupted(o, rec);
   if (stats.status != "ok") {
     fmt::print(stderr, "finseg: error: {}: the simulation diverged: {}\n", o.scene, stats.message);
     fmt::print(stderr, "finseg: kept the {} outputs recorded before ({} to {})\n", rec.outputs(),
@@ -89,6 +217,19 @@ void register_run(CLI::App& app) {
   run->add_option("SCENE", o->scene, "scene file (YAML, docs/scene.md)")->required();
   run->add_option("--out", o->out, "output folder (created if needed)")->required();
   run->add_flag("--quiet", o->quiet, "no progress display and no result lines");
+  run->add_flag("--resume", o->resume,
+                "continue the run whose checkpoint is in --out (same scene; dynamic solvers)");
+  run->add_option("--state", o->state_file,
+                  "start from this state file instead of the scene's initial state "
+                  "(docs/state-file.md)");
+  run->add_option("--checkpoint-every", o->checkpoint_every,
+                  "wall seconds between checkpoints in DIR/checkpoint.json (0: every output)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  run->add_option("--progress-every", o->progress_every,
+                  "wall seconds between progress lines when stderr is not a terminal")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   run->callback([o] { run_scene(*o); });
 }
 

@@ -16,6 +16,17 @@ struct ElementHistory {
   bool opened = false;    ///< currently past the opening threshold
 };
 
+/// What a dynamic solver carries from one step to the next besides the State proper, saved
+/// at each output so that a run continued from a checkpoint takes the same steps.
+struct SolverMemory {
+  double dt = 0;                 ///< step the solver takes next, s (0: unknown)
+  double next_output = 0;        ///< time of the next output, s
+  double t_start = 0;            ///< explicit: time of step 0 (t = t_start + steps dt), s
+  long steps = 0;                ///< explicit: steps taken since t_start
+  double t = -1;                 ///< State::t when saved; ignored at any other time
+  std::vector<Vec3> f_W, tau_W;  ///< explicit: forces the next step starts from, N, N m
+};
+
 struct State {
   double t = 0;                         ///< s (static solver: load or drive parameter)
   std::vector<Vec3> p_W;                ///< centroid positions, m
@@ -26,6 +37,7 @@ struct State {
   double load_scale = 1.0;              ///< multiplies loads and gravity (static load stepping)
   std::vector<ElementHistory> history;  ///< one per force element
   ContactState contact;                 ///< contact points' history (friction anchors)
+  SolverMemory solver;                  ///< integrator memory (checkpoints, resume)
 };
 
 /// State at t = 0: initial poses, zero velocities, initial crease angles.

@@ -121,4 +121,13 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
   }
 }
 
+void RunRecorder::restore(std::vector<ProbeTable> tables, std::vector<Frame> frames,
+                          std::vector<PhaseSample> samples, double last_x, std::size_t outputs) {
+  tables_ = std::move(tables);
+  frames_ = std::move(frames);
+  samples_ = std::move(samples);
+  last_x_ = last_x;
+  outputs_ = outputs;
+}
+
 }  // namespace finseg

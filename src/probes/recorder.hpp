@@ -61,6 +61,11 @@ class RunRecorder {
   const std::string& abscissa() const { return abscissa_; }
   std::size_t outputs() const { return outputs_; }  ///< outputs recorded so far
 
+  /// Replaces what was recorded by what a checkpoint saved (`finseg run --resume`): tables
+  /// are this recorder's (same probes, same order) with their rows.
+  void restore(std::vector<ProbeTable> tables, std::vector<Frame> frames,
+               std::vector<PhaseSample> samples, double last_x, std::size_t outputs);
+
  private:
   std::vector<double> row(const ProbeDef& p, const State& s, const BodyForces& f,
                           const ContactSummary* contact) const;

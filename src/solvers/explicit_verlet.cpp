@@ -49,6 +49,17 @@ double automatic_step(const Model& model, const State& state) {
   return 0.8 * 2.0 / omega * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
+// Saves what the next step needs (a run continued from a checkpoint of this state).
+void remember(State& state, const BodyForces& f, double h, double next_output, double t0, long n) {
+  state.solver = {h, next_output, t0, n, state.t, f.f_W, f.tau_W};
+}
+
+// Between outputs the memory is stale; empty, it costs nothing in the per-step State copies.
+void forget(State& state) {
+  state.solver.f_W.clear();
+  state.solver.tau_W.clear();
+}
+
 }  // namespace
 
 void run_explicit(const Model& model, State& state, const SolverSettings& settings,
@@ -62,11 +73,23 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   BodyForces f;
   compute_forces(model, state, f);
   ++stats.force_evaluations;
+  // Continuing a run: the first kick uses the forces the interrupted run would have used,
+  // and the step count goes on from where it was (t = t0 + n h exactly as before).
+  const SolverMemory& mem = state.solver;
+  const bool resumed = mem.t == state.t && mem.f_W.size() == f.f_W.size() &&
+                       mem.tau_W.size() == f.tau_W.size() && mem.next_output > state.t;
+  const double t0 = resumed ? mem.t_start : state.t;
+  const long n0 = resumed ? mem.steps : 0;
+  double next_output = resumed ? mem.next_output : t0 + every;
+  if (resumed) {
+    f.f_W = mem.f_W;
+    f.tau_W = mem.tau_W;
+  }
+  remember(state, f, h, next_output, t0, n0);
   on_output(state, f);
-  const double t0 = state.t;
-  double next_output = t0 + every;
+  forget(state);
   const long total = static_cast<long>(std::ceil((settings.t_end - t0) / h - 1e-9));
-  for (long n = 1; n <= total; ++n) {
+  for (long n = n0 + 1; n <= total; ++n) {
     const State last_good = state;
     kick(model, state, f, 0.5 * h);
     drift(model, state, h);
@@ -84,9 +107,11 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
     commit_history(model, state);
     ++stats.steps;
     if (state.t >= next_output - 1e-9 * h || n == total) {
-      on_output(state, f);
       next_output += every;
-      on_progress((state.t - t0) / (settings.t_end - t0));
+      remember(state, f, h, next_output, t0, n);
+      on_output(state, f);
+      forget(state);
+      on_progress((state.t - t0) / (settings.t_end - t0));  // of the whole run
     }
   }
 }

@@ -71,9 +71,12 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   BodyForces f;
   compute_forces(model, state, f);
   ++stats.force_evaluations;
-  on_output(state, f);
+  // A run continued from a checkpoint keeps the interrupted run's output times.
+  const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
   const double t0 = state.t;
-  double next_output = t0 + every;
+  double next_output = resumed ? state.solver.next_output : t0 + every;
+  state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+  on_output(state, f);
   stats.smallest_step = h;
   while (state.t < settings.t_end - 1e-12 * every) {
     const double h_try = std::min({h, next_output - state.t, settings.t_end - state.t});
@@ -107,8 +110,9 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     // A step shortened only to land on an output time says nothing about the next one.
     h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
     if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
-      on_output(state, f);
       next_output += every;
+      state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+      on_output(state, f);
       on_progress((state.t - t0) / (settings.t_end - t0));
     }
   }

@@ -1,9 +1,37 @@
+#include <fmt/format.h>
+
+#include <atomic>
 #include <chrono>
 
 #include "core/error.hpp"
 #include "solvers/integrators.hpp"
+#include "solvers/stop_request.hpp"
 
 namespace finseg {
+namespace {
+
+// Signal handlers may only touch lock-free atomics.
+std::atomic<bool> g_stop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+// Unwinds a solver from an output point once a stop was requested.
+struct StopAtOutput {
+  double t;
+};
+
+}  // namespace
+
+void request_stop() noexcept {
+  g_stop.store(true);
+}
+
+bool stop_requested() noexcept {
+  return g_stop.load();
+}
+
+void clear_stop_request() noexcept {
+  g_stop.store(false);
+}
 
 double output_interval(const SolverSettings& s) {
   return s.output_interval > 0 ? s.output_interval : s.t_end / 100.0;
@@ -13,7 +41,12 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
                        const OutputCallback& on_output, const ProgressCallback& on_progress) {
   SolverStats stats;
   const auto start = std::chrono::steady_clock::now();
-  const OutputCallback out = on_output ? on_output : [](const State&, const BodyForces&) {};
+  // Every solver, present or future, stops at its outputs: the wrapper checks the flag after
+  // the caller has recorded the output, so nothing recorded is lost.
+  const OutputCallback out = [&on_output](const State& s, const BodyForces& f) {
+    if (on_output) on_output(s, f);
+    if (stop_requested()) throw StopAtOutput{s.t};
+  };
   const ProgressCallback prog = on_progress ? on_progress : [](double) {};
   try {
     switch (settings.kind) {
@@ -30,6 +63,9 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
   } catch (const DivergenceError& e) {
     stats.status = "diverged";
     stats.message = e.what();
+  } catch (const StopAtOutput& stop) {
+    stats.status = kInterruptedStatus;
+    stats.message = fmt::format("stopped on request at the output t = {:.6g}", stop.t);
   }
   stats.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -319,6 +319,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
       [&](State& s, double x) {
         s.load_scale = x;
         s.t = x;
+        if (!path && x < lambda_end) on_progress(x / lambda_end);  // long load-only solves
       },
       "load scale", f, stats, false);
   commit_history(model, state);

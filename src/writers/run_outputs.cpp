@@ -314,7 +314,10 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                    {"files", report.files},
                    {"warnings", report.warnings}};
   if (o.phases.enabled) j["phases"] = phases_json(phases, o.phases);
-  write_file_atomically((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n");
+  // Invalid UTF-8 is refused before the run (writers/output_folder.hpp); should any text
+  // still carry some, the summary must not be lost for it.
+  write_file_atomically((fs::path(dir) / "summary.json").string(),
+                        j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   report.files.push_back("summary.json");
   return report;
 }

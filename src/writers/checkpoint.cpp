@@ -1,0 +1,180 @@
+#include "writers/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "writers/atomic_write.hpp"
+
+namespace finseg {
+namespace {
+
+using nlohmann::json;
+
+// Recorded numbers may be NaN (JSON null).
+double value(const json& v, const std::string& file, const std::string& field) {
+  if (v.is_null()) return NAN;
+  if (!v.is_number()) throw InputError(file, field, "expected a number");
+  return v.get<double>();
+}
+
+const json& member(const json& obj, const std::string& key, const std::string& file,
+                   const std::string& field) {
+  if (!obj.is_object() || !obj.contains(key)) throw InputError(file, field + "." + key, "missing");
+  return obj[key];
+}
+
+std::vector<double> numbers(const json& v, const std::string& file, const std::string& field) {
+  if (!v.is_array()) throw InputError(file, field, "expected an array");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back(value(v[i], file, fmt::format("{}[{}]", field, i)));
+  return out;
+}
+
+Vec3 vec3(const json& v, const std::string& file, const std::string& field) {
+  const std::vector<double> x = numbers(v, file, field);
+  if (x.size() != 3) throw InputError(file, field, "expected 3 numbers");
+  return {x[0], x[1], x[2]};
+}
+
+json pair_json(const PairSample& s) {
+  const ContactPairForce& p = s.force;
+  return {s.x,
+          p.a,
+          p.b,
+          p.points,
+          p.normal_force,
+          p.friction_force,
+          p.max_penetration,
+          {p.f_b_W.x(), p.f_b_W.y(), p.f_b_W.z()}};
+}
+
+PairSample pair_from(const json& v, const std::string& file, const std::string& field) {
+  if (!v.is_array() || v.size() != 8) throw InputError(file, field, "expected 8 entries");
+  PairSample s;
+  s.x = value(v[0], file, field + "[0]");
+  s.force.a = v[1].get<int>();
+  s.force.b = v[2].get<int>();
+  s.force.points = v[3].get<int>();
+  s.force.normal_force = value(v[4], file, field + "[4]");
+  s.force.friction_force = value(v[5], file, field + "[5]");
+  s.force.max_penetration = value(v[6], file, field + "[6]");
+  s.force.f_b_W = vec3(v[7], file, field + "[7]");
+  return s;
+}
+
+json frame_json(const Frame& f) {
+  json p = json::array(), r = json::array(), c = json::array();
+  for (const Vec3& x : f.p_W) p.push_back({x.x(), x.y(), x.z()});
+  for (const Mat3& m : f.R_WB)
+    r.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
+  for (const Vec3& x : f.contact_points_W) c.push_back({x.x(), x.y(), x.z()});
+  return {{"t", f.t}, {"p_W_m", p}, {"R_WB", r}, {"contact_points_W_m", c}};
+}
+
+Frame frame_from(const json& v, const std::string& file, const std::string& field) {
+  Frame f;
+  f.t = value(member(v, "t", file, field), file, field + ".t");
+  const json& p = member(v, "p_W_m", file, field);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    f.p_W.push_back(vec3(p[i], file, fmt::format("{}.p_W_m[{}]", field, i)));
+  const json& r = member(v, "R_WB", file, field);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const std::vector<double> x = numbers(r[i], file, fmt::format("{}.R_WB[{}]", field, i));
+    if (x.size() != 9) throw InputError(file, fmt::format("{}.R_WB[{}]", field, i), "expected 9");
+    f.R_WB.push_back(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x.data()));
+  }
+  const json& c = member(v, "contact_points_W_m", file, field);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    f.contact_points_W.push_back(
+        vec3(c[i], file, fmt::format("{}.contact_points_W_m[{}]", field, i)));
+  return f;
+}
+
+json recorded_json(const RunRecorder& rec) {
+  json tables = json::array();
+  for (const ProbeTable& t : rec.tables()) {
+    json pairs = json::array();
+    for (const PairSample& s : t.pair_rows) pairs.push_back(pair_json(s));
+    tables.push_back({{"name", t.name}, {"rows", t.rows}, {"pair_rows", pairs}});
+  }
+  json frames = json::array();
+  for (const Frame& f : rec.frames()) frames.push_back(frame_json(f));
+  json samples = json::array();
+  for (const PhaseSample& p : rec.phase_samples())
+    samples.push_back({p.displacement, p.active_contacts, p.bend});
+  return {{"outputs", rec.outputs()},
+          {"last_abscissa", rec.last_abscissa()},
+          {"tables", tables},
+          {"frames", frames},
+          {"phase_samples", samples}};
+}
+
+void restore_recorded(const json& j, const std::string& file, RunRecorder& rec) {
+  const std::string run = "run";
+  std::vector<ProbeTable> tables = rec.tables();
+  const json& jt = member(j, "tables", file, run);
+  if (!jt.is_array() || jt.size() != tables.size())
+    throw InputError(file, "run.tables", fmt::format("expected {} probes", tables.size()));
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const std::string f = fmt::format("run.tables[{}]", k);
+    if (member(jt[k], "name", file, f) != tables[k].name)
+      throw InputError(file, f + ".name", "expected probe \"" + tables[k].name + "\"");
+    const json& rows = member(jt[k], "rows", file, f);
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      tables[k].rows.push_back(numbers(rows[r], file, fmt::format("{}.rows[{}]", f, r)));
+      if (tables[k].rows.back().size() != tables[k].columns.size())
+        throw InputError(file, fmt::format("{}.rows[{}]", f, r),
+                         fmt::format("expected {} columns", tables[k].columns.size()));
+    }
+    const json& pairs = member(jt[k], "pair_rows", file, f);
+    for (std::size_t r = 0; r < pairs.size(); ++r)
+      tables[k].pair_rows.push_back(
+          pair_from(pairs[r], file, fmt::format("{}.pair_rows[{}]", f, r)));
+  }
+  std::vector<Frame> frames;
+  const json& jf = member(j, "frames", file, run);
+  for (std::size_t i = 0; i < jf.size(); ++i)
+    frames.push_back(frame_from(jf[i], file, fmt::format("run.frames[{}]", i)));
+  std::vector<PhaseSample> samples;
+  const json& js = member(j, "phase_samples", file, run);
+  for (std::size_t i = 0; i < js.size(); ++i) {
+    const std::vector<double> x = numbers(js[i], file, fmt::format("run.phase_samples[{}]", i));
+    if (x.size() != 3)
+      throw InputError(file, fmt::format("run.phase_samples[{}]", i), "expected 3");
+    samples.push_back({x[0], static_cast<int>(x[1]), x[2]});
+  }
+  const json& outputs = member(j, "outputs", file, run);
+  if (!outputs.is_number_unsigned()) throw InputError(file, "run.outputs", "expected a count");
+  rec.restore(std::move(tables), std::move(frames), std::move(samples),
+              value(member(j, "last_abscissa", file, run), file, "run.last_abscissa"),
+              outputs.get<std::size_t>());
+}
+
+}  // namespace
+
+void write_checkpoint(const std::string& dir, const Model& model, const StateSnapshot& snapshot,
+                      const RunRecorder& rec) {
+  json j = state_json(model, snapshot);
+  j["run"] = recorded_json(rec);
+  write_file_atomically((std::filesystem::path(dir) / kCheckpointFile).string(),
+                        j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
+
+StateSnapshot read_checkpoint(const std::string& path, const Model& model, RunRecorder& rec) {
+  json j;
+  try {
+    j = json::parse(read_whole_file(path));
+  } catch (const json::exception& e) {
+    throw InputError(path, "(file)", std::string("not valid JSON: ") + e.what());
+  }
+  StateSnapshot snap = parse_state_json(j, model, path);
+  if (!j.contains("run")) throw InputError(path, "run", "missing (a state file, not a checkpoint)");
+  restore_recorded(j["run"], path, rec);
+  return snap;
+}
+
+}  // namespace finseg

@@ -1,0 +1,308 @@
+// finseg run loses nothing (issue 14 item 2): SIGINT/SIGTERM sent to a real child process,
+// write-time failures found before the run, --resume and --state, the manifest, progress
+// lines off a terminal.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_test_util.hpp"
+
+namespace finseg {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_finseg;
+using test::slurp;
+using test::spit;
+using test::TempDir;
+
+nlohmann::json summary(const TempDir& dir, const std::string& out) {
+  return nlohmann::json::parse(slurp(dir / (out + "/summary.json")));
+}
+
+std::vector<std::vector<double>> csv_numbers(const std::string& text) {
+  std::string header;
+  return test::csv_rows(text, &header);
+}
+
+// A cantilever under a tip load; `t_end` sets how long the dynamic run takes.
+// Outputs every t_end / 20 s, at most every ms.
+void write_cantilever(const TempDir& dir, const std::string& solver, double t_end,
+                      const std::string& file = "c.yaml") {
+  const auto r =
+      run_finseg(dir, "gen cantilever --segments 8 --tip-force 0,0,-1e-3 --solver " + solver +
+                          " --t-end " + std::to_string(t_end) + " --output-interval " +
+                          std::to_string(std::min(1e-3, t_end / 20)) + " --out " + file);
+  ASSERT_EQ(r.code, 0) << r.err;
+}
+
+// Starts `finseg run ARGS` as a child process; stdout and stderr go to files in `dir`.
+pid_t spawn_run(const TempDir& dir, const std::vector<std::string>& args) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.path().c_str()) != 0) _exit(120);
+    if (!freopen("child_stdout.txt", "w", stdout) || !freopen("child_stderr.txt", "w", stderr))
+      _exit(121);
+    std::vector<char*> argv{const_cast<char*>(FINSEG_BINARY), const_cast<char*>("run")};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(FINSEG_BINARY, argv.data());
+    _exit(122);
+  }
+  return pid;
+}
+
+// Waits until `path` exists (the run has started recording), at most 60 s.
+bool wait_for(const std::string& path) {
+  for (int i = 0; i < 60000; ++i) {
+    if (fs::exists(path)) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
+}
+
+int wait_exit_code(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Interrupts a long run (minutes uninterrupted) as soon as it has recorded its first output.
+int interrupt_run(const TempDir& dir, int sig, const std::string& out) {
+  const pid_t pid = spawn_run(dir, {"c.yaml", "--out", out, "--checkpoint-every", "0"});
+  EXPECT_TRUE(wait_for(dir / (out + "/checkpoint.json")));
+  kill(pid, sig);
+  return wait_exit_code(pid);
+}
+
+void expect_interrupted_outputs(const TempDir& dir, const std::string& out) {
+  const auto j = summary(dir, out);
+  EXPECT_EQ(j["status"], "interrupted");
+  EXPECT_NE(j["message"].get<std::string>().find("interrupted by"), std::string::npos);
+  const auto rows = csv_numbers(slurp(dir / (out + "/tip.csv")));
+  ASSERT_GE(rows.size(), 1u);
+  EXPECT_EQ(rows.size(), j["outputs"].get<std::size_t>());
+  EXPECT_LT(rows.back()[0], 1.0);  // stopped long before t_end = 100 s
+  EXPECT_GE(rows.size(), 2u);      // the output after the signal was recorded
+  EXPECT_TRUE(fs::exists(dir / (out + "/manifest.json")));
+}
+
+TEST(CliRunSafety, SigintStopsAtAnOutputAndKeepsEverything) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 100);
+  EXPECT_EQ(interrupt_run(dir, SIGINT, "out"), 130) << slurp(dir / "child_stderr.txt");
+  expect_interrupted_outputs(dir, "out");
+  EXPECT_NE(slurp(dir / "child_stderr.txt").find("--resume"), std::string::npos);
+}
+
+TEST(CliRunSafety, SigtermStopsAtAnOutputAndKeepsEverything) {
+  TempDir dir;
+  write_cantilever(dir, "implicit", 100);
+  EXPECT_EQ(interrupt_run(dir, SIGTERM, "out"), 143) << slurp(dir / "child_stderr.txt");
+  expect_interrupted_outputs(dir, "out");
+}
+
+void replace_line(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text = slurp(path);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, from.size(), to);
+  spit(path, text);
+}
+
+// Final state of a run from its checkpoint.json (17 significant digits: exact doubles).
+std::vector<double> final_state(const TempDir& dir, const std::string& out) {
+  const auto j = nlohmann::json::parse(slurp(dir / (out + "/checkpoint.json")));
+  std::vector<double> x{j["t"].get<double>()};
+  for (const auto& b : j["bodies"]) {
+    for (const char* k : {"p_W_m", "R_WB", "v_W_m_s", "w_W_rad_s"}) {
+      for (const auto& v : b[k]) x.push_back(v.get<double>());
+    }
+  }
+  return x;
+}
+
+// An interrupted and resumed run ends where an uninterrupted one does, with the same rows.
+void expect_resume_matches(const std::string& solver) {
+  TempDir dir;
+  write_cantilever(dir, solver, 0.02);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");  // frames are restored too
+  auto r = run_finseg(dir, "run c.yaml --out whole --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(interrupt_run(dir, SIGINT, "parts"), 130) << slurp(dir / "child_stderr.txt");
+  const std::size_t before = summary(dir, "parts")["outputs"];
+  ASSERT_LT(before, 21u) << "the signal came after the run's end: nothing to resume";
+  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(summary(dir, "parts")["status"], "ok");
+  const auto a = final_state(dir, "whole"), b = final_state(dir, "parts");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-12) << i;
+  const auto ra = csv_numbers(slurp(dir / "whole/tip.csv"));
+  const auto rb = csv_numbers(slurp(dir / "parts/tip.csv"));
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) {
+    for (std::size_t c = 0; c < ra[i].size(); ++c) EXPECT_NEAR(ra[i][c], rb[i][c], 1e-12);
+  }
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames.pvd"), slurp(dir / "parts/vtk/frames.pvd"));
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames_00001.vtu"), slurp(dir / "parts/vtk/frames_00001.vtu"));
+  EXPECT_EQ(slurp(dir / "whole/vtk/frames_00020.vtu"), slurp(dir / "parts/vtk/frames_00020.vtu"));
+}
+
+TEST(CliRunSafety, ResumedExplicitRunEqualsUninterruptedRun) {
+  expect_resume_matches("explicit");
+}
+
+TEST(CliRunSafety, ResumedImplicitRunEqualsUninterruptedRun) {
+  expect_resume_matches("implicit");
+}
+
+TEST(CliRunSafety, ResumeRefusesACheckpointOfAnotherScene) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 0.01);
+  write_cantilever(dir, "explicit", 0.02, "d.yaml");
+  ASSERT_EQ(run_finseg(dir, "run c.yaml --out out --quiet").code, 0);
+  const auto r = run_finseg(dir, "run d.yaml --out out --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("scene_hash"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("another scene"), std::string::npos) << r.err;
+}
+
+TEST(CliRunSafety, StaticRunStartsFromAStateFileButIsNotResumed) {
+  TempDir dir;
+  write_cantilever(dir, "static", 1);
+  ASSERT_EQ(run_finseg(dir, "run c.yaml --out a --quiet").code, 0);
+  auto r = run_finseg(dir, "run c.yaml --out a --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("static solver runs cannot be resumed"), std::string::npos) << r.err;
+  // From its own equilibrium the static solver finds the same tip position.
+  r = run_finseg(dir, "run c.yaml --out b --quiet --state a/checkpoint.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<double> ta = summary(dir, "a")["probes"]["tip"]["final"];
+  const std::vector<double> tb = summary(dir, "b")["probes"]["tip"]["final"];
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(ta[k], tb[k], 1e-9);
+}
+
+TEST(CliRunSafety, StateFileOfAnotherModelIsRefused) {
+  TempDir dir;
+  write_cantilever(dir, "static", 1);
+  ASSERT_EQ(run_finseg(dir, "run c.yaml --out a --quiet").code, 0);
+  const auto r0 = run_finseg(dir, "gen cantilever --segments 4 --out e.yaml");
+  ASSERT_EQ(r0.code, 0);
+  const auto r = run_finseg(dir, "run e.yaml --out b --state a/checkpoint.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("model.bodies"), std::string::npos) << r.err;
+}
+
+// Write-time failures are found before the simulation: each scene below would run for
+// minutes (t_end 1000 s, explicit) before writing anything.
+void expect_refused_up_front(const TempDir& dir, const std::string& args,
+                             const std::string& expected) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_finseg(dir, args);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+  EXPECT_LT(wall, 30.0);  // not after the run (which would take far longer)
+}
+
+TEST(CliRunSafety, InvalidUtf8TitleIsRefusedBeforeTheRun) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 1000);
+  replace_line(dir / "c.yaml", "title: cantilever", "title: \"bad \xff\xfe title\"");
+  expect_refused_up_front(dir, "run c.yaml --out out", "title: is not valid UTF-8");
+  EXPECT_FALSE(fs::exists(dir / "out/summary.json"));
+}
+
+TEST(CliRunSafety, ProbeNamesThatCannotBeFileNamesAreRefusedBeforeTheRun) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 1000);
+  replace_line(dir / "c.yaml", "name: tip", "name: " + std::string(256, 'p'));
+  expect_refused_up_front(dir, "run c.yaml --out out", "probes[0].name: is 256 bytes long");
+  replace_line(dir / "c.yaml", "name: " + std::string(256, 'p'), "name: \"a/b\"");
+  expect_refused_up_front(dir, "run c.yaml --out out", "probes[0].name");
+}
+
+TEST(CliRunSafety, EmptyOutIsRefusedBeforeTheRun) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 1000);
+  expect_refused_up_front(dir, "run c.yaml --out ''", "--out: must name a folder");
+}
+
+TEST(CliRunSafety, UncreatableOutIsRefusedBeforeTheRun) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 1000);
+  spit(dir / "plain_file", "x");  // a path under a regular file stops root too
+  expect_refused_up_front(dir, "run c.yaml --out plain_file/out", "cannot create");
+}
+
+TEST(CliRunSafety, ReadOnlyOutIsRefusedBeforeTheRun) {
+  if (geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders; see UncreatableOut";
+  TempDir dir;
+  write_cantilever(dir, "explicit", 1000);
+  fs::create_directories(dir / "ro");
+  chmod((dir / "ro").c_str(), 0555);
+  expect_refused_up_front(dir, "run c.yaml --out ro", "cannot write files in this folder");
+  chmod((dir / "ro").c_str(), 0755);
+}
+
+// A second run into the same folder removes the first run's files (and only those).
+TEST(CliRunSafety, SecondRunRemovesTheFirstRunsFiles) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 0.01);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");
+  ASSERT_EQ(run_finseg(dir, "run c.yaml --out out --quiet").code, 0);
+  ASSERT_TRUE(fs::exists(dir / "out/vtk/frames.pvd"));
+  ASSERT_TRUE(fs::exists(dir / "out/vtk/frames_00001.vtu"));
+  spit(dir / "out/notes.txt", "mine");
+  replace_line(dir / "c.yaml", "vtk: true", "vtk: false");
+  replace_line(dir / "c.yaml", "name: tip", "name: end");
+  ASSERT_EQ(run_finseg(dir, "run c.yaml --out out --quiet").code, 0);
+  EXPECT_FALSE(fs::exists(dir / "out/tip.csv"));
+  EXPECT_FALSE(fs::exists(dir / "out/vtk"));
+  EXPECT_TRUE(fs::exists(dir / "out/end.csv"));
+  EXPECT_EQ(slurp(dir / "out/notes.txt"), "mine");
+  const auto m = nlohmann::json::parse(slurp(dir / "out/manifest.json"));
+  const std::vector<std::string> files = m["files"];
+  EXPECT_EQ(files, (std::vector<std::string>{"checkpoint.json", "end.csv", "summary.json",
+                                             "manifest.json"}));
+}
+
+TEST(CliRunSafety, ProgressLinesWhenStderrIsNotATerminal) {
+  TempDir dir;
+  write_cantilever(dir, "implicit", 0.01);
+  auto r = run_finseg(dir, "run c.yaml --out out --progress-every 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("finseg: [100.0%] t = 0.01 s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ETA"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);  // plain lines, no redrawing
+  r = run_finseg(dir, "run c.yaml --out out --quiet --progress-every 0");
+  EXPECT_EQ(r.err, "");
+}
+
+// A static load-only run reports its load steps, not only its end.
+TEST(CliRunSafety, StaticLoadSteppingReportsProgress) {
+  TempDir dir;
+  write_cantilever(dir, "static", 1);
+  replace_line(dir / "c.yaml", "load_steps: 1", "load_steps: 4");
+  const auto r = run_finseg(dir, "run c.yaml --out out --progress-every 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("finseg: [ 25.0%] load 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("finseg: [100.0%] load 1"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace finseg
