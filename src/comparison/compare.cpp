@@ -68,8 +68,7 @@ std::pair<double, double> peak(const std::vector<double>& x, const std::vector<d
 
 ForceCurve read_force_curve(const std::string& path, const std::string& x_column,
                             const std::string& y_column) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "file", "cannot be opened");
+  std::istringstream in(read_text_file(path));  // BOM and CR line ends as everywhere
   ForceCurve c;
   c.source = path;
   Column cx, cy;

@@ -13,7 +13,8 @@
 
 namespace finseg {
 
-CantileverData parse_cantilever_data(std::istream& in, const std::string& file) {
+CantileverData parse_cantilever_data(std::istream& raw_in, const std::string& file) {
+  std::istringstream in(read_text(raw_in));
   CantileverData d;
   d.source = file;
   std::string raw;
@@ -56,7 +57,7 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
           col_x = static_cast<int>(i);
           x_scale = 1e-3;
         } else {
-          throw InputError(file, fmt::format("line {}: column '{}'", line, cells[i]),
+          throw InputError(file, fmt::format("line {}: column {}", line, quoted(cells[i])),
                            "unknown column; allowed: force_N, tip_displacement_m | "
                            "tip_displacement_mm");
         }

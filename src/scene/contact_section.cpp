@@ -5,6 +5,7 @@
 
 #include "collision/contact_laws.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "scene/sections.hpp"
 #include "scene/yaml_fields.hpp"
 
@@ -43,7 +44,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) 
     c.damping_law = ContactDamping::Flores;
   } else {
     f.fail("damping_law",
-           "'" + law + "'; allowed: impact, hunt_crossley, lankarani_nikravesh, flores");
+           quoted(law) + "; allowed: impact, hunt_crossley, lankarani_nikravesh, flores");
   }
   if (f.has("damping_law") && c.damping_law != ContactDamping::Impact && !f.has("restitution"))
     f.fail("restitution", "required by damping_law " + law + " (a value in (0, 1])");
@@ -76,7 +77,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) 
     } else if (model == "anchor") {
       c.friction = FrictionModel::Anchor;
     } else {
-      fr.fail("model", "'" + model + "'; allowed: none, continuous, anchor");
+      fr.fail("model", quoted(model) + "; allowed: none, continuous, anchor");
     }
     c.mu_static = number(fr, "mu_static", c.mu_static, "");
     c.mu_dynamic = number(fr, "mu_dynamic", c.mu_dynamic, "");

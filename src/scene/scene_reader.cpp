@@ -3,30 +3,25 @@
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
 #include "scene/scene_parts.hpp"
-#include "writers/atomic_write.hpp"
 
 namespace finseg {
 
 Scene read_scene(const std::string& path) {
-  std::string text;
-  try {
-    text = read_whole_file(path);
-  } catch (const std::exception& e) {
-    throw InputError(path, "file", std::string("cannot be read: ") + e.what());
-  }
-  return parse_scene(text, path);
+  return parse_scene(read_text_file(path), path);
 }
 
 Scene parse_scene(const std::string& yaml, const std::string& file) {
   YAML::Node root_node;
   try {
-    root_node = YAML::Load(yaml);
+    root_node = YAML::Load(normalize_text(yaml));
   } catch (const YAML::Exception& e) {
     throw InputError(file, fmt::format("line {}", e.mark.line + 1),
                      fmt::format("malformed YAML: {}", e.msg));
   }
   if (!root_node.IsMap()) throw InputError(file, "<top level>", "must be a map of sections");
+  refuse_duplicate_keys(root_node, {file, ""});
   const Fields root(
       root_node, {file, ""},
       {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
@@ -39,6 +34,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file) {
     read_attachments(root, scene.zigzag, scene.model);
     scene.solver = read_solver_section(root);
     scene.outputs = read_outputs_section(root, scene.model);
+    check_run_size(scene, scene.zigzag ? "zigzag.pull_step" : "drives[0].step");
   } catch (const YAML::Exception& e) {  // e.g. a map or list used as a key
     throw InputError(file, fmt::format("line {}", e.mark.line + 1), e.msg);
   }

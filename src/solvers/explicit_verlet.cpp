@@ -8,6 +8,7 @@
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
+#include "solvers/step_limits.hpp"
 
 namespace finseg {
 namespace {
@@ -65,7 +66,8 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   on_output(state, f);
   const double t0 = state.t;
   double next_output = t0 + every;
-  const long total = static_cast<long>(std::ceil((settings.t_end - t0) / h - 1e-9));
+  const long total = solver_step_count(settings.t_end - t0, h, "explicit solver");
+  require_step_advances(std::max(std::abs(t0), std::abs(settings.t_end)), h, "explicit solver");
   for (long n = 1; n <= total; ++n) {
     const State last_good = state;
     kick(model, state, f, 0.5 * h);
