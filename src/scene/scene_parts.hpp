@@ -41,6 +41,10 @@ void check_model_memory(double along, double across, const std::string& file,
 /// (solvers/step_limits.hpp); `drive_step_field` names the first drive's step in the scene.
 void check_run_size(const Scene& scene, const std::string& drive_step_field);
 
+/// The scene field(s) behind a field of model validation ("bodies[3].mass" ->
+/// "material.density, sheet.thickness, ..."): messages name what the user can change.
+std::string scene_field_of_model(const std::string& model_field, bool zigzag);
+
 /// Runs `build` and turns an InputError raised by library code against "<api>" into one
 /// naming `file` and the scene field (through `scene_field`, identity when empty).
 void in_scene_file(const std::string& file, const std::function<void()>& build,

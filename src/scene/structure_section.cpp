@@ -107,7 +107,7 @@ Model read_general_sheet(const Fields& root, const Fields& sheet, SheetSpec s) {
       root.context().file, [&] { m = build_sheet_model(s); }, sheet_field);
   m.gravity_W = root.vector3("gravity", Vec3::Zero(), "m/s^2");
   if (root.has("contact"))
-    m.contact = read_contact_section(root.node("contact"), root.context("contact"));
+    m.contact = read_contact_section(root.node("contact"), root.context("contact"), panel_count(m));
   return m;
 }
 
@@ -213,7 +213,7 @@ Model read_zigzag(const Fields& root, const Fields& sheet, const SheetSpec& base
   if (const auto v = z.optional_number("pull_speed", non_negative("m/s"))) m.drives[0].speed = *v;
   m.gravity_W = root.vector3("gravity", Vec3(0, 0, -9.81), "m/s^2");
   if (replace_contact) {
-    m.contact = read_contact_section(root.node("contact"), root.context("contact"));
+    m.contact = read_contact_section(root.node("contact"), root.context("contact"), panel_count(m));
     if (m.contact.groups.empty()) m.contact.groups = adjacent_panel_groups(s.panels);
   }
   return m;
