@@ -16,6 +16,7 @@
 #include "elements/crease_laws/crease_data.hpp"
 #include "generators/sheet.hpp"
 #include "identification/bending.hpp"
+#include "identification/crease.hpp"
 #include "scene/scene_parts.hpp"
 #include "scene/scene_reader.hpp"
 #include "solvers/linear_solve.hpp"
@@ -259,6 +260,37 @@ TEST(IdentifyOverflow, RefusedWithLineAndColumn) {
   std::istringstream ok("force_N,tip_displacement_m\n0.001,0.001\n");
   EXPECT_THROW(identify_bending(parse_cantilever_data(ok, "b.csv"), 0.1, 8, 0.02, 1e-200),
                InputError);
+}
+
+TEST(IdentifyOverflow, CreaseSplineThatOverflowsIsRefused) {
+  std::istringstream in("angle_deg,moment_Nm\n10,1e308\n20,1.5e308\n30,1.7e308\n40,1.79e308\n");
+  const CreaseData flap = parse_crease_data(in, "flap.csv", std::nullopt);
+  try {
+    identify_crease(flap, SplineEnds::NotAKnot);
+    ADD_FAILURE() << "accepted moments near 1e308 N m";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "flap.csv");
+    EXPECT_EQ(e.field(), "curve pressing_time_s 0, opening 1") << e.what();
+  }
+}
+
+// The command line: each former silent result is now exit 2 with a one-line message, and
+// the hang (1e-320 Pa) ends at once.
+TEST(InputValidationCli, FormerSilentResultsExitWithTwo) {
+  const test::TempDir dir;
+  test::spit(dir / "dt.yaml", replaced(kSheet, "type: static", "type: explicit\n  dt: 1e-19"));
+  test::spit(dir / "e.yaml", replaced(kSheet, "youngs_modulus: 4.0e9", "youngs_modulus: 1e-320"));
+  test::spit(dir / "dup.yaml",
+             replaced(kSheet, "  thickness: 0.0001\n", "  thickness: 0.0001\n  thickness: -5\n"));
+  test::spit(dir / "b.csv", "force_N,tip_displacement_m\n1e308,1e308\n");
+  for (const char* args : {"run dt.yaml --out o --quiet", "run e.yaml --out o --quiet",
+                           "run dup.yaml --out o --quiet", "identify bending b.csv --length 0.1"}) {
+    const test::CliResult r = test::run_finseg(dir, args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("finseg: error: "), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "o/summary.json"));
 }
 
 // Messages: scene fields instead of internal ones, long values cut short.
