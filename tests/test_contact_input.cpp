@@ -25,7 +25,7 @@ friction:
   tangential_stiffness: 500
   tangential_damping: 0.01
 panel_exclusion: 3
-groups: [[0, 1], [1, 2]]
+groups: [[1, 2], [2, 3]]
 )";
 
 ContactDef read(const std::string& text) {
@@ -79,7 +79,7 @@ TEST(ContactInput, RefusesBadValuesNamingTheField) {
   expect_refused("model: anchor", "model: sticky", "contact.friction.model");
   expect_refused("exponent: 1.5", "exponnent: 1.5", "contact.exponnent");
   expect_refused("stiffness: 1.2e5", "stiffness: stiff", "contact.stiffness");
-  expect_refused("groups: [[0, 1], [1, 2]]", "groups: [[0, -1]]", "contact.groups");
+  expect_refused("groups: [[1, 2], [2, 3]]", "groups: [[1, 0]]", "contact.groups[0][1]");
 }
 
 TEST(ContactInput, ApiModelsAreCheckedToo) {

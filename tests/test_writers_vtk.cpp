@@ -103,7 +103,7 @@ TEST(VtkWriter, BoxesParseBackWithHandComputedCorners) {
   EXPECT_EQ(data_array(vtu, "offsets"), (std::vector<double>{8, 16}));
   EXPECT_EQ(data_array(vtu, "types"), (std::vector<double>{12, 12}));
   EXPECT_EQ(data_array(vtu, "body"), (std::vector<double>{0, 1}));
-  EXPECT_EQ(data_array(vtu, "panel"), (std::vector<double>{3, 0}));
+  EXPECT_EQ(data_array(vtu, "panel"), (std::vector<double>{4, 1}));  // from 1, as in scenes
   EXPECT_EQ(data_array(vtu, "fixed"), (std::vector<double>{0, 1}));
   // No contact points in any frame: no contact files.
   EXPECT_FALSE(fs::exists(dir / "run_contacts.pvd"));

@@ -129,8 +129,7 @@ void require_finite(const Comparison& c, const ForceCurve& sim,
 
 ForceCurve read_force_curve(const std::string& path, const std::string& x_column,
                             const std::string& y_column) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "file", "cannot be opened");
+  std::istringstream in(read_text_file(path));  // BOM and CR line ends as everywhere
   ForceCurve c;
   c.source = path;
   Column cx, cy;

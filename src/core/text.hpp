@@ -1,10 +1,29 @@
 // Small text and value checks shared by the readers (crease data, test data, measured curves).
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
 namespace finseg {
+
+/// `text` with a leading UTF-8 byte-order mark removed and CRLF / lone CR line ends turned
+/// into LF: every reader (scene YAML, crease, cantilever and measured-curve CSVs) goes
+/// through this, so files saved by Windows tools read the same as any other.
+std::string normalize_text(std::string text);
+
+/// Whole stream, normalised (normalize_text).
+std::string read_text(std::istream& in);
+
+/// Whole file, normalised; InputError(path, "file", "cannot be read: ...") otherwise.
+std::string read_text_file(const std::string& path);
+
+/// `s` quoted for a message, cut to its first `max_chars` characters + "..." when longer.
+std::string quoted(const std::string& s, std::size_t max_chars = 40);
+
+/// Throws InputError(file, field, ...) when `v` is subnormal (0 < |v| < 2.2e-308): such
+/// numbers are never a physical input and stall the sparse factorisation.
+void refuse_subnormal(double v, const std::string& file, const std::string& field);
 
 /// `s` without leading and trailing blanks (space, tab, carriage return).
 std::string trim(const std::string& s);

@@ -13,7 +13,8 @@
 
 namespace finseg {
 
-CantileverData parse_cantilever_data(std::istream& in, const std::string& file) {
+CantileverData parse_cantilever_data(std::istream& raw_in, const std::string& file) {
+  std::istringstream in(read_text(raw_in));
   CantileverData d;
   d.source = file;
   std::string raw;
@@ -56,7 +57,7 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
           col_x = static_cast<int>(i);
           x_scale = 1e-3;
         } else {
-          throw InputError(file, fmt::format("line {}: column '{}'", line, cells[i]),
+          throw InputError(file, fmt::format("line {}: column {}", line, quoted(cells[i])),
                            "unknown column; allowed: force_N, tip_displacement_m | "
                            "tip_displacement_mm");
         }
@@ -82,6 +83,7 @@ CantileverData parse_cantilever_data(std::istream& in, const std::string& file) 
     }
     d.force.push_back(F);
     d.deflection.push_back(x);
+    d.line.push_back(line);
   }
   if (header.empty()) {
     throw InputError(file, "header", "no header; expected force_N, tip_displacement_m");
@@ -94,6 +96,16 @@ CantileverData read_cantilever_data(const std::string& path) {
   if (!in) throw InputError(path, "file", "cannot open cantilever data file");
   return parse_cantilever_data(in, path);
 }
+
+namespace {
+
+// "line 7: force_N, tip_displacement" for a point read from a file, "row 3: ..." otherwise.
+std::string point_field(const CantileverData& d, std::size_t i) {
+  return i < d.line.size() ? fmt::format("line {}: force_N, tip displacement", d.line[i])
+                           : fmt::format("row {}: force, deflection", i + 1);
+}
+
+}  // namespace
 
 double chain_compliance_factor(int segments) {
   const double n = segments;
@@ -117,6 +129,12 @@ BendingIdentification identify_bending(const CantileverData& data, double length
     sff += data.force[i] * data.force[i];
     sfx += data.force[i] * data.deflection[i];
     loaded += data.force[i] > 0;
+    if (!std::isfinite(sff) || !std::isfinite(sfx)) {
+      throw InputError(f, point_field(data, i),
+                       fmt::format("force {:g} N, tip displacement {:g} m: the least-squares "
+                                   "sums overflow; give the values in N and m",
+                                   data.force[i], data.deflection[i]));
+    }
   }
   if (loaded < 1 || !(sfx > 0)) {
     throw InputError(f, "data", "need at least one point with force > 0 and deflection > 0");
@@ -138,6 +156,22 @@ BendingIdentification identify_bending(const CantileverData& data, double length
   r.joint_stiffness = r.EI_chain / r.cell_length;
   if (width && thickness) {
     r.youngs_modulus = 12 * r.EI_continuum / (*width * std::pow(*thickness, 3));
+    if (!std::isfinite(*r.youngs_modulus) || !(*r.youngs_modulus > 0)) {
+      throw InputError(f, "width, thickness",
+                       fmt::format("{:g} m, {:g} m give a Young's modulus of {:g} Pa; not a "
+                                   "finite positive number",
+                                   *width, *thickness, *r.youngs_modulus));
+    }
+  }
+  for (const double v :
+       {r.compliance, r.rms_residual, r.max_slope, r.EI_continuum, r.EI_chain, r.joint_stiffness}) {
+    if (!std::isfinite(v) || !(r.compliance > 0)) {
+      throw InputError(f, "data",
+                       fmt::format("the fit gives compliance {:g} m/N, EI {:g} N m^2: not finite; "
+                                   "check the units and magnitudes of force_N, tip displacement "
+                                   "and the length {:g} m",
+                                   r.compliance, r.EI_continuum, length));
+    }
   }
   return r;
 }

@@ -21,8 +21,9 @@ namespace finseg {
 /// Measured cantilever points and the strip geometry the file states (if any).
 struct CantileverData {
   std::string source;
-  std::vector<double> force;                       ///< N
-  std::vector<double> deflection;                  ///< tip displacement, m
+  std::vector<double> force;       ///< N
+  std::vector<double> deflection;  ///< tip displacement, m
+  std::vector<int> line;           ///< file line of each point (empty when not read from a file)
   std::optional<double> length, width, thickness;  ///< m, from "# length_m: ..." lines
 };
 
@@ -47,7 +48,9 @@ struct BendingIdentification {
   std::optional<double> youngs_modulus;  ///< 12 EI_continuum / (b t^3) when b, t known, Pa
 };
 
-/// Fits the compliance and inverts continuum and chain. Throws InputError on bad values.
+/// Fits the compliance and inverts continuum and chain. Throws InputError on bad values,
+/// naming the row and column of a value whose products overflow, and on any result that
+/// is not a finite number.
 BendingIdentification identify_bending(const CantileverData& data, double length, int segments,
                                        std::optional<double> width = std::nullopt,
                                        std::optional<double> thickness = std::nullopt);

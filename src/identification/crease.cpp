@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "core/error.hpp"
 #include "core/types.hpp"
 #include "elements/crease_laws/measured.hpp"
 
@@ -36,6 +38,14 @@ CreaseIdentification identify_crease(const CreaseData& flap, SplineEnds ends) {
                                                  : std::numeric_limits<double>::quiet_NaN();
     s.tangent_start = law.opening_moment(th0, 1).slope;
     s.tangent_end = law.opening_moment(th1, 1).slope;
+    if (!std::isfinite(s.tangent_start) || !std::isfinite(s.tangent_end)) {
+      throw InputError(
+          flap.source,
+          fmt::format("curve pressing_time_s {:g}, opening {}", c.pressing_time, c.opening),
+          fmt::format("the spline through the moments (up to {:g} N m) is not "
+                      "finite; give moments in N m and angles in degrees",
+                      *std::max_element(c.moment.begin(), c.moment.end())));
+    }
     id.curves.push_back(s);
   }
   return id;

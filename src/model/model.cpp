@@ -1,6 +1,7 @@
 #include "model/model.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -23,6 +24,12 @@ int Model::body_index(const std::string& name) const {
     if (bodies[i].name == name) return static_cast<int>(i);
   }
   return -1;
+}
+
+int panel_count(const Model& m) {
+  int panels = 1;
+  for (const BodyDef& b : m.bodies) panels = std::max(panels, b.panel + 1);
+  return panels;
 }
 
 Mat3 box_inertia(double mass, const Vec3& size) {

@@ -116,6 +116,9 @@ struct Model {
 };
 
 /// Mass and centroidal inertia of a box of edge lengths `size` and total mass `mass`.
+/// Number of panels (largest BodyDef::panel + 1, at least 1).
+int panel_count(const Model& m);
+
 Mat3 box_inertia(double mass, const Vec3& size);
 
 /// Checks sizes, indices and finiteness; throws InputError naming model.source.

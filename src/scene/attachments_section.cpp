@@ -3,6 +3,7 @@
 
 #include <map>
 
+#include "core/text.hpp"
 #include "generators/sheet.hpp"
 #include "scene/scene_parts.hpp"
 
@@ -18,8 +19,9 @@ std::string body_names_hint(const Model& m) {
 int body_by_name(const Model& m, const std::string& name, const YamlContext& ctx) {
   const int b = m.body_index(name);
   if (b < 0) {
-    throw InputError(ctx.file, ctx.field,
-                     fmt::format("'{}' is not a body of the model; {}", name, body_names_hint(m)));
+    throw InputError(
+        ctx.file, ctx.field,
+        fmt::format("{} is not a body of the model; {}", quoted(name), body_names_hint(m)));
   }
   return b;
 }
@@ -83,7 +85,8 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
     DriveDef d;
     d.name = f.required_word("name");
     for (const DriveDef& other : m.drives) {
-      if (other.name == d.name) f.fail("name", "'" + d.name + "' is used twice; names must differ");
+      if (other.name == d.name)
+        f.fail("name", quoted(d.name) + " is used twice; names must differ");
     }
     const MaterialPoint p = read_location(f, m);
     d.body = p.body;
@@ -114,7 +117,7 @@ ProbeKind probe_kind(const Fields& f) {
   const std::string type = f.required_word("type");
   const auto it = kinds.find(type);
   if (it == kinds.end()) {
-    f.fail("type", "'" + type + "'; allowed: point, drive, reaction, energy, contact");
+    f.fail("type", quoted(type) + "; allowed: point, drive, reaction, energy, contact");
   }
   return it->second;
 }
@@ -129,11 +132,12 @@ std::vector<std::string> file_stems(const ProbeDef& p) {
 // contact probe's pairs file.
 void check_file_names(const Fields& f, const ProbeDef& p, const std::vector<ProbeDef>& earlier) {
   for (const ProbeDef& other : earlier) {
-    if (other.name == p.name) f.fail("name", "'" + p.name + "' is used twice; names must differ");
+    if (other.name == p.name) f.fail("name", quoted(p.name) + " is used twice; names must differ");
     for (const std::string& a : file_stems(p)) {
       for (const std::string& b : file_stems(other)) {
         if (a == b)
-          f.fail("name", "'" + p.name + "' and '" + other.name + "' both write " + a + ".csv");
+          f.fail("name",
+                 quoted(p.name) + " and " + quoted(other.name) + " both write " + a + ".csv");
       }
     }
   }
@@ -150,7 +154,7 @@ void read_probes(const Fields& root, Model& m) {
     p.name = f.required_word("name");
     if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
       f.fail("name",
-             "'" + p.name + "'; must be a non-empty file-name-safe word (no / \\ or space)");
+             quoted(p.name) + "; must be a non-empty file-name-safe word (no / \\ or space)");
     }
     p.kind = probe_kind(f);
     p.pairs = f.flag("pairs", false);
@@ -165,7 +169,7 @@ void read_probes(const Fields& root, Model& m) {
       for (std::size_t d = 0; d < m.drives.size(); ++d) {
         if (m.drives[d].name == drive) p.drive = static_cast<int>(d);
       }
-      if (p.drive < 0) f.fail("drive", "'" + drive + "' is not a drive of the scene");
+      if (p.drive < 0) f.fail("drive", quoted(drive) + " is not a drive of the scene");
     }
     m.probes.push_back(p);
   }

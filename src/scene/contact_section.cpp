@@ -1,16 +1,18 @@
 // The `contact:` section of a scene file (docs/contact.md, "Scene file").
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 
 #include "collision/contact_laws.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "scene/sections.hpp"
 #include "scene/yaml_fields.hpp"
 
 namespace finseg {
 
-ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) {
+ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, int panels) {
   ContactDef c;
   if (!node || node.IsNull()) return c;
   if (!node.IsMap())
@@ -43,7 +45,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) 
     c.damping_law = ContactDamping::Flores;
   } else {
     f.fail("damping_law",
-           "'" + law + "'; allowed: impact, hunt_crossley, lankarani_nikravesh, flores");
+           quoted(law) + "; allowed: impact, hunt_crossley, lankarani_nikravesh, flores");
   }
   if (f.has("damping_law") && c.damping_law != ContactDamping::Impact && !f.has("restitution"))
     f.fail("restitution", "required by damping_law " + law + " (a value in (0, 1])");
@@ -53,16 +55,17 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) 
       sequence(f.node("groups"), f.context("groups"), "panel lists");
   for (std::size_t i = 0; i < groups.size(); ++i) {
     const YamlContext gctx{ctx.file, item_field(f.field("groups"), i)};
-    std::vector<int> panels;
+    std::vector<int> group;
     const std::vector<YAML::Node> items = sequence(groups[i], gctx, "panel indices");
     for (std::size_t j = 0; j < items.size(); ++j) {
-      try {
-        panels.push_back(items[j].as<int>());
-      } catch (const YAML::Exception&) {
-        throw InputError(ctx.file, item_field(gctx.field, j), "must be a panel index >= 0");
-      }
+      const YamlContext pctx{ctx.file, item_field(gctx.field, j)};
+      const double last = panels > 0 ? panels : 1e6;
+      const double p =
+          read_number_at(items[j], pctx, interval(1, last, false, false, "(panel, from 1)"));
+      if (p != std::floor(p)) throw InputError(ctx.file, pctx.field, "must be a whole number");
+      group.push_back(static_cast<int>(p) - 1);
     }
-    c.groups.push_back(panels);
+    c.groups.push_back(group);
   }
   if (f.has("friction")) {
     const Fields fr(f.node("friction"), f.context("friction"),
@@ -76,7 +79,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx) 
     } else if (model == "anchor") {
       c.friction = FrictionModel::Anchor;
     } else {
-      fr.fail("model", "'" + model + "'; allowed: none, continuous, anchor");
+      fr.fail("model", quoted(model) + "; allowed: none, continuous, anchor");
     }
     c.mu_static = number(fr, "mu_static", c.mu_static, "");
     c.mu_dynamic = number(fr, "mu_dynamic", c.mu_dynamic, "");

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/crease_data.hpp"
 #include "elements/crease_laws/measured.hpp"
@@ -44,6 +45,7 @@ double number(const YAML::Node& node, const YamlContext& ctx, const std::string&
   if (!std::isfinite(x)) {
     throw InputError(ctx.file, ctx.field + "." + key, "must be finite " + range);
   }
+  refuse_subnormal(x, ctx.file, ctx.field + "." + key);
   return x;
 }
 
@@ -136,7 +138,7 @@ std::shared_ptr<const CreaseLaw> read_crease_law(const YAML::Node& node, const Y
       const std::string ends = text(node, ctx, "ends");
       if (!parse_spline_ends(ends, o.ends)) {
         throw InputError(ctx.file, ctx.field + ".ends",
-                         fmt::format("'{}'; allowed: natural, not-a-knot", ends));
+                         quoted(ends) + "; allowed: natural, not-a-knot");
       }
     }
     if (node["openings_before"]) {
@@ -152,8 +154,7 @@ std::shared_ptr<const CreaseLaw> read_crease_law(const YAML::Node& node, const Y
         std::make_shared<MeasuredCreaseLaw>(data, o, ctx.file, ctx.field);
     return with_relaxation(std::move(law), node, ctx);
   }
-  throw InputError(ctx.file, ctx.field + ".type",
-                   fmt::format("'{}'; allowed: linear, measured", type));
+  throw InputError(ctx.file, ctx.field + ".type", quoted(type) + "; allowed: linear, measured");
 }
 
 }  // namespace finseg

@@ -54,8 +54,7 @@ OutputSettings read_outputs_section(const Fields& root, const Model& m) {
   o.vtk = f.flag("vtk", pulled);
   o.html = f.flag("html", pulled);
   o.plot = f.flag("plot", pulled);
-  int panels = 1;
-  for (const BodyDef& b : m.bodies) panels = std::max(panels, b.panel + 1);
+  const int panels = panel_count(m);
   PhaseSettings& p = o.phases;
   const auto watched_exist = [&] {
     return std::all_of(p.panels.begin(), p.panels.end(), [&](int q) { return q <= panels; });

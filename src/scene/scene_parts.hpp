@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -27,6 +28,22 @@ SolverSettings read_solver_section(const Fields& root);
 
 /// The `outputs:` section; defaults depend on the model (drives, panels).
 OutputSettings read_outputs_section(const Fields& root, const Model& model);
+
+/// Free memory (MemAvailable of /proc/meminfo) in bytes; nullopt where it cannot be read.
+std::optional<double> available_memory_bytes();
+
+/// Refuses a model of `along` x `across` segments that cannot fit in the free memory (or
+/// exceeds the 32-bit DOF indexing): InputError(file, fields, "... need at least X GiB ...").
+void check_model_memory(double along, double across, const std::string& file,
+                        const std::string& fields);
+
+/// Refuses a run whose step or output count exceeds kMaxSteps / kMaxOutputs
+/// (solvers/step_limits.hpp); `drive_step_field` names the first drive's step in the scene.
+void check_run_size(const Scene& scene, const std::string& drive_step_field);
+
+/// The scene field(s) behind a field of model validation ("bodies[3].mass" ->
+/// "material.density, sheet.thickness, ..."): messages name what the user can change.
+std::string scene_field_of_model(const std::string& model_field, bool zigzag);
 
 /// Runs `build` and turns an InputError raised by library code against "<api>" into one
 /// naming `file` and the scene field (through `scene_field`, identity when empty).

@@ -3,30 +3,45 @@
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
 #include "scene/scene_parts.hpp"
-#include "writers/atomic_write.hpp"
 
 namespace finseg {
 
-Scene read_scene(const std::string& path) {
-  std::string text;
-  try {
-    text = read_whole_file(path);
-  } catch (const std::exception& e) {
-    throw InputError(path, "file", std::string("cannot be read: ") + e.what());
+std::string scene_field_of_model(const std::string& model_field, bool zigzag) {
+  const auto part = [&](const char* p) { return model_field.find(p) != std::string::npos; };
+  if (model_field.rfind("bodies", 0) == 0) {
+    if (part(".mass") || part(".inertia")) {
+      return "material.density, sheet.thickness, sheet.length, sheet.width (segment mass = "
+             "density x thickness x area; from " +
+             model_field + ")";
+    }
+    return "sheet.length, sheet.width, sheet.thickness, discretisation (from " + model_field + ")";
   }
-  return parse_scene(text, path);
+  if (model_field.rfind("elements", 0) == 0) {
+    if (part(".damping")) return "material.damping_time (from " + model_field + ")";
+    return "material.youngs_modulus, stiffness, crease laws (from " + model_field + ")";
+  }
+  if (zigzag && model_field.rfind("drives[0]", 0) == 0) {
+    return "zigzag.pull_* / gauge_stiffness (from " + model_field + ")";
+  }
+  return model_field;  // loads[i], drives[i], gravity: named as in the scene
+}
+
+Scene read_scene(const std::string& path) {
+  return parse_scene(read_text_file(path), path);
 }
 
 Scene parse_scene(const std::string& yaml, const std::string& file) {
   YAML::Node root_node;
   try {
-    root_node = YAML::Load(yaml);
+    root_node = YAML::Load(normalize_text(yaml));
   } catch (const YAML::Exception& e) {
     throw InputError(file, fmt::format("line {}", e.mark.line + 1),
                      fmt::format("malformed YAML: {}", e.msg));
   }
   if (!root_node.IsMap()) throw InputError(file, "<top level>", "must be a map of sections");
+  refuse_duplicate_keys(root_node, {file, ""});
   const Fields root(
       root_node, {file, ""},
       {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
@@ -39,10 +54,18 @@ Scene parse_scene(const std::string& yaml, const std::string& file) {
     read_attachments(root, scene.zigzag, scene.model);
     scene.solver = read_solver_section(root);
     scene.outputs = read_outputs_section(root, scene.model);
+    check_run_size(scene, scene.zigzag ? "zigzag.pull_step" : "drives[0].step");
   } catch (const YAML::Exception& e) {  // e.g. a map or list used as a key
     throw InputError(file, fmt::format("line {}", e.mark.line + 1), e.msg);
   }
-  in_scene_file(file, [&] { validate(scene.model); });
+  try {
+    validate(scene.model);
+  } catch (const InputError& e) {
+    const std::string prefix = e.file() + ": " + e.field() + ": ";
+    std::string what = e.what();
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    throw InputError(file, scene_field_of_model(e.field(), scene.zigzag), what);
+  }
   return scene;
 }
 

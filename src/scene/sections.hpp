@@ -19,8 +19,10 @@ struct YamlContext {
   std::string field;  ///< dotted path of the node, e.g. "sheet.folds[2].law"
 };
 
-/// Reads the `contact:` section (docs/scene.md). Throws InputError on bad values.
-ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx);
+/// Reads the `contact:` section (docs/scene.md). Throws InputError on bad values. Panels in
+/// `groups` are numbered from 1 as everywhere in scene files (stored from 0); with
+/// `panels` > 0 each must be one of 1..panels.
+ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, int panels = 0);
 
 /// Reads a crease law description (docs/scene.md, docs/crease-data.md); relative file
 /// names are resolved against the scene file's folder.

@@ -12,20 +12,27 @@
 namespace finseg {
 namespace {
 
+// Physical ranges, wide enough for any sheet (gels to diamond, aerogel to osmium, graphene
+// to plate) and narrow enough that the stiffness and mass matrices stay well scaled.
+const Range kModulusRange = interval(1e2, 1e13, false, false, "Pa");
+const Range kDensityRange = interval(1e-2, 1e5, false, false, "kg/m^3");
+const Range kThicknessRange = interval(1e-10, 1, false, false, "m");
+const Range kSizeRange = interval(1e-6, 1e4, false, false, "m");
+
 void read_material(const Fields& root, SheetSpec& s) {
   if (!root.has("material")) root.fail("material", "required section (youngs_modulus, density)");
   const Fields m(root.node("material"), root.context("material"),
                  {"youngs_modulus", "poisson_ratio", "density", "damping_time"});
-  s.youngs_modulus = m.number("youngs_modulus", positive("Pa"));
+  s.youngs_modulus = m.number("youngs_modulus", kModulusRange);
   s.poisson_ratio = m.number("poisson_ratio", 0.3, interval(0, 0.5, false, true));
-  s.density = m.number("density", positive("kg/m^3"));
+  s.density = m.number("density", kDensityRange);
   s.damping_time = m.number("damping_time", 0.0, non_negative("s"));
 }
 
 void read_sheet_size(const Fields& sheet, SheetSpec& s) {
-  s.length = sheet.number("length", positive("m"));
-  s.width = sheet.number("width", positive("m"));
-  s.thickness = sheet.number("thickness", positive("m"));
+  s.length = sheet.number("length", kSizeRange);
+  s.width = sheet.number("width", kSizeRange);
+  s.thickness = sheet.number("thickness", kThicknessRange);
 }
 
 void read_discretisation(const Fields& root, SheetSpec& s, bool zigzag) {
@@ -92,12 +99,15 @@ Model read_general_sheet(const Fields& root, const Fields& sheet, SheetSpec s) {
   const Fields fix = fixtures_of(root);
   s.clamp_start = fix.flag("clamp_start", false);
   for (int p : fix.integers("panels", 1, 1000000)) s.fixed_panels.push_back(p - 1);
+  check_model_memory(static_cast<double>(s.cells_along) * static_cast<double>(s.folds.size() + 1),
+                     s.cells_across, root.context().file,
+                     "discretisation.segments x segments_across");
   Model m;
   in_scene_file(
       root.context().file, [&] { m = build_sheet_model(s); }, sheet_field);
   m.gravity_W = root.vector3("gravity", Vec3::Zero(), "m/s^2");
   if (root.has("contact"))
-    m.contact = read_contact_section(root.node("contact"), root.context("contact"));
+    m.contact = read_contact_section(root.node("contact"), root.context("contact"), panel_count(m));
   return m;
 }
 
@@ -189,6 +199,9 @@ Model read_zigzag(const Fields& root, const Fields& sheet, const SheetSpec& base
       replace_contact = true;
     }
   }
+  check_model_memory(static_cast<double>(s.segments_per_panel) * s.panels, s.segments_across,
+                     root.context().file,
+                     "discretisation.segments x segments_across x zigzag.panels");
   Model m;
   in_scene_file(
       root.context().file,
@@ -200,7 +213,7 @@ Model read_zigzag(const Fields& root, const Fields& sheet, const SheetSpec& base
   if (const auto v = z.optional_number("pull_speed", non_negative("m/s"))) m.drives[0].speed = *v;
   m.gravity_W = root.vector3("gravity", Vec3(0, 0, -9.81), "m/s^2");
   if (replace_contact) {
-    m.contact = read_contact_section(root.node("contact"), root.context("contact"));
+    m.contact = read_contact_section(root.node("contact"), root.context("contact"), panel_count(m));
     if (m.contact.groups.empty()) m.contact.groups = adjacent_panel_groups(s.panels);
   }
   return m;

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <map>
+
 #include "core/error.hpp"
+#include "core/text.hpp"
 
 namespace finseg {
 
@@ -53,16 +56,56 @@ double read_number_at(const YAML::Node& node, const YamlContext& ctx, const Rang
   try {
     x = node.as<double>();
   } catch (const YAML::Exception&) {
-    throw InputError(
-        ctx.file, ctx.field,
-        fmt::format("'{}' is not a number; allowed range {}", node.Scalar(), range.describe()));
+    throw InputError(ctx.file, ctx.field,
+                     fmt::format("{} is not a number; allowed range {}", quoted(node.Scalar()),
+                                 range.describe()));
   }
+  refuse_subnormal(x, ctx.file, ctx.field);
   if (!range.contains(x)) {
     throw InputError(ctx.file, ctx.field,
                      fmt::format("{}{}; allowed range {}", x,
                                  range.unit.empty() ? "" : " " + range.unit, range.describe()));
   }
   return x;
+}
+
+namespace {
+
+// Nodes visited by the duplicate-key walk; aliases can make a small file a huge tree.
+constexpr long kMaxYamlNodes = 10'000'000;
+
+void walk_keys(const YAML::Node& node, const YamlContext& ctx, long& visited) {
+  if (++visited > kMaxYamlNodes) {
+    throw InputError(ctx.file, ctx.field.empty() ? "<top level>" : ctx.field,
+                     fmt::format("more than {} YAML nodes (aliases?)", kMaxYamlNodes));
+  }
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      walk_keys(node[i], {ctx.file, item_field(ctx.field, i)}, visited);
+    }
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::map<std::string, int> line_of;
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) continue;  // refused with its line by the section reader
+    const std::string key = kv.first.Scalar();
+    const int line = kv.first.Mark().line + 1;
+    const std::string field = child_field(ctx.field, key);
+    if (const auto [it, fresh] = line_of.emplace(key, line); !fresh) {
+      throw InputError(
+          ctx.file, field,
+          fmt::format("given twice (lines {} and {}); each key may appear once", it->second, line));
+    }
+    walk_keys(kv.second, {ctx.file, field}, visited);
+  }
+}
+
+}  // namespace
+
+void refuse_duplicate_keys(const YAML::Node& node, const YamlContext& ctx) {
+  long visited = 0;
+  walk_keys(node, ctx, visited);
 }
 
 std::vector<YAML::Node> sequence(const YAML::Node& node, const YamlContext& ctx,
@@ -124,7 +167,7 @@ int Fields::integer(const std::string& key, int fallback, int min, int max) cons
     if (!v.IsScalar()) throw YAML::Exception(YAML::Mark(), "");
     x = v.as<long long>();
   } catch (const YAML::Exception&) {
-    fail(key, fmt::format("'{}'; must be {}", v.IsScalar() ? v.Scalar() : "?", allowed));
+    fail(key, fmt::format("{}; must be {}", v.IsScalar() ? quoted(v.Scalar()) : "?", allowed));
   }
   if (x < min || x > max) fail(key, fmt::format("{}; must be {}", x, allowed));
   return static_cast<int>(x);

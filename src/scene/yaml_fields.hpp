@@ -68,6 +68,11 @@ double read_number_at(const YAML::Node& node, const YamlContext& ctx, const Rang
 std::vector<YAML::Node> sequence(const YAML::Node& node, const YamlContext& ctx,
                                  const std::string& what);
 
+/// Walks every map of the tree under `node` and throws InputError naming the dotted field
+/// and both line numbers when a key appears twice (yaml-cpp keeps both; `node[key]` would
+/// silently return the first).
+void refuse_duplicate_keys(const YAML::Node& node, const YamlContext& ctx);
+
 /// Field name of element i of a list: "loads" -> "loads[2]".
 std::string item_field(const std::string& list, std::size_t i);
 

@@ -8,6 +8,7 @@
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
+#include "solvers/step_limits.hpp"
 
 namespace finseg {
 namespace {
@@ -88,7 +89,8 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   remember(state, f, h, next_output, t0, n0);
   on_output(state, f);
   forget(state);
-  const long total = static_cast<long>(std::ceil((settings.t_end - t0) / h - 1e-9));
+  const long total = solver_step_count(settings.t_end - t0, h, "explicit solver");
+  require_step_advances(std::max(std::abs(t0), std::abs(settings.t_end)), h, "explicit solver");
   for (long n = n0 + 1; n <= total; ++n) {
     const State last_good = state;
     kick(model, state, f, 0.5 * h);

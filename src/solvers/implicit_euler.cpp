@@ -9,6 +9,7 @@
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/linear_solve.hpp"
+#include "solvers/step_limits.hpp"
 
 namespace finseg {
 namespace {
@@ -80,6 +81,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   stats.smallest_step = h;
   while (state.t < settings.t_end - 1e-12 * every) {
     const double h_try = std::min({h, next_output - state.t, settings.t_end - state.t});
+    require_step_advances(state.t, h_try, "implicit solver");
     const State start = state;
     const StepResult r =
         backward_euler_step(model, state, start, h_try, settings.max_iterations, tol, f, stats);

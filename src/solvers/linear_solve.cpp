@@ -2,6 +2,8 @@
 
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace finseg {
 namespace {
@@ -36,6 +38,13 @@ bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b
   thread_local FactorCache cache;
   Eigen::SparseMatrix<double> Ac = A;
   Ac.makeCompressed();
+  // Eigen's SparseLU never returns on subnormal entries (a modulus of 1e-320 Pa made them):
+  // they are zero for every purpose here. A non-finite entry has no solution.
+  for (double* v = Ac.valuePtr(); v != Ac.valuePtr() + Ac.nonZeros(); ++v) {
+    if (!std::isfinite(*v)) return false;
+    if (std::abs(*v) < std::numeric_limits<double>::min()) *v = 0;
+  }
+  if (!b.allFinite()) return false;
   if (!cache.same_pattern(Ac)) {
     cache.lu.analyzePattern(Ac);
     cache.remember_pattern(Ac);

@@ -10,6 +10,7 @@
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/linear_solve.hpp"
+#include "solvers/step_limits.hpp"
 
 namespace finseg {
 namespace {
@@ -254,6 +255,7 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
   const double dx_min = std::abs(b - a) * 1e-6;
   constexpr double kJump = 1e-2;  // of the interval: how far past a limit point settle starts
   while ((b - x) * (b > a ? 1 : -1) > 1e-12 * std::abs(b - a)) {
+    require_step_advances(x, dx, std::string("static solver, ") + what);
     const double x_try = (b > a) ? std::min(b, x + dx) : std::max(b, x + dx);
     const State start = state;
     set(state, x_try);
@@ -331,7 +333,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   }
   // Quasi-static pull: one equilibrium per drive step; t records the drive displacement.
   const DriveDef& d0 = model.drives[0];
-  const int n = static_cast<int>(std::ceil(d0.travel / d0.step - 1e-9));
+  const long n = solver_step_count(d0.travel, d0.step, "static solver (drive path)");
   state.t = 0;
   on_output(state, f);
   // Along the pull Newton converges in a handful of iterations where it converges at all: a
@@ -341,7 +343,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   SolverSettings path_settings = settings;
   path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
   double ds = d0.step;
-  for (int k = 1; k <= n; ++k) {
+  for (long k = 1; k <= n; ++k) {
     const double s_from = state.drive_s[0];
     const double s_to = std::min(d0.travel, k * d0.step);
     continuation(

@@ -88,7 +88,8 @@ std::string bodies_vtu(const Model& model, const Frame& frame) {
   append_cells(out, n, 8, kVtkHexahedron);
   out += "      <CellData Scalars=\"panel\">\n";
   append_int_array(out, "body", n, [](std::size_t i) { return static_cast<int>(i); });
-  append_int_array(out, "panel", n, [&](std::size_t i) { return model.bodies[i].panel; });
+  // Panels from 1, as in scene files and the HTML legend.
+  append_int_array(out, "panel", n, [&](std::size_t i) { return model.bodies[i].panel + 1; });
   append_int_array(out, "fixed", n, [&](std::size_t i) { return model.bodies[i].fixed ? 1 : 0; });
   out += "      </CellData>\n";
   out += kVtuFooter;

@@ -106,8 +106,9 @@ std::vector<const CreaseCurve*> CreaseData::curves_at(double pressing_time) cons
   return out;
 }
 
-CreaseData parse_crease_data(std::istream& in, const std::string& file,
+CreaseData parse_crease_data(std::istream& raw_in, const std::string& file,
                              std::optional<double> default_lever) {
+  std::istringstream in(read_text(raw_in));
   std::string raw;
   int line_no = 0;
   std::vector<std::string> header;
@@ -128,11 +129,11 @@ CreaseData parse_crease_data(std::istream& in, const std::string& file,
     static const char* known[] = {"angle_deg",       "moment_Nm", "force_N", "lever_m",
                                   "pressing_time_s", "opening",   "repeat"};
     if (std::find(std::begin(known), std::end(known), header[i]) == std::end(known)) {
-      throw InputError(file, fmt::format("line {}: column '{}'", header_line, header[i]),
+      throw InputError(file, fmt::format("line {}: column {}", header_line, quoted(header[i])),
                        fmt::format("unknown column; allowed: {}", kAllowedColumns));
     }
     if (col.count(header[i])) {
-      throw InputError(file, fmt::format("line {}: column '{}'", header_line, header[i]),
+      throw InputError(file, fmt::format("line {}: column {}", header_line, quoted(header[i])),
                        "appears twice");
     }
     col[header[i]] = static_cast<int>(i);
