@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <vector>
 
 #include "generators/cantilever.hpp"
@@ -22,7 +23,7 @@ constexpr double kL = 0.2;
 struct Run {
   std::vector<Vec3> tips;  // at 0.25, 0.5, 1 s
   SolverStats stats;
-  double wall = 0;
+  double wall = 0, cpu = 0;  // s; cpu: this process's CPU time (robust on a shared machine)
 };
 
 Run run(int segments, ImplicitScheme scheme, double rtol) {
@@ -47,12 +48,14 @@ Run run(int segments, ImplicitScheme scheme, double rtol) {
   set.rtol = rtol;
   Run r;
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   r.stats = run_solver(m, state, set, [&](const State& x, const BodyForces&) {
     for (double t : {0.25, 0.5, 1.0}) {
       if (std::abs(x.t - t) < 1e-9) r.tips.push_back(x.p_W[p.body] + x.R_WB[p.body] * p.point_B);
     }
   });
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
 }
 
@@ -80,9 +83,9 @@ int main(int argc, char** argv) {
   for (int n : segs) {
     const Run ref = run(n, ImplicitScheme::GeneralizedAlpha, 1e-8);
     const Run check = run(n, ImplicitScheme::GeneralizedAlpha, 1e-7);
-    std::printf("| %d | reference | 1e-8 | %.1e (vs 1e-7) | %ld | %ld | %ld | %.3g s |\n", n,
-                worst(ref, check), ref.stats.steps, ref.stats.rejected_steps,
-                ref.stats.newton_iterations, ref.wall);
+    std::printf("| %d | reference | 1e-8 | %.1e (vs 1e-7) | %ld | %ld | %ld | %.3g s | %.3g s |\n",
+                n, worst(ref, check), ref.stats.steps, ref.stats.rejected_steps,
+                ref.stats.newton_iterations, ref.wall, ref.cpu);
     std::fflush(stdout);
     for (ImplicitScheme sch : {ImplicitScheme::GeneralizedAlpha, ImplicitScheme::BackwardEuler}) {
       const char* name =
@@ -92,13 +95,14 @@ int main(int argc, char** argv) {
         const Run r = run(n, sch, rtol);
         const double e = worst(r, ref);
         if (e < 1e-3) {
-          std::printf("| %d | %s | %.0e | %.1e | %ld | %ld | %ld | %.3g s |\n", n, name, rtol, e,
-                      r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations, r.wall);
+          std::printf("| %d | %s | %.0e | %.1e | %ld | %ld | %ld | %.3g s | %.3g s |\n", n, name,
+                      rtol, e, r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations,
+                      r.wall, r.cpu);
           found = true;
           break;
         }
       }
-      if (!found) std::printf("| %d | %s | - | not reached at rtol 1e-7 | | | | |\n", n, name);
+      if (!found) std::printf("| %d | %s | - | not reached at rtol 1e-7 | | | | | |\n", n, name);
       std::fflush(stdout);
     }
   }

@@ -10,7 +10,9 @@
 #include <numbers>
 #include <vector>
 
+#include "core/error.hpp"
 #include "elastica_reference.hpp"
+#include "scene/scene_reader.hpp"
 #include "solvers/generalized_alpha.hpp"
 #include "validation_cantilever.hpp"
 
@@ -310,6 +312,34 @@ TEST(GeneralizedAlphaCantilever, FreeVibrationFrequency) {
         rho, w, w_beam, w / w_beam - 1, w_model, w / w_model - 1, stats.steps);
     EXPECT_NEAR(w / w_beam, 1, 1e-2) << rho;  // 16 segments: the discretisation's own error
     EXPECT_NEAR(w / w_model, 1, 1e-3) << rho;
+  }
+}
+
+std::string scene_with_solver(const std::string& solver) {
+  return "material: {youngs_modulus: 4e9, density: 800}\n"
+         "sheet: {length: 0.1, width: 0.02, thickness: 1e-4}\n"
+         "discretisation: {segments: 4}\n"
+         "fixtures: {panels: [1]}\n"
+         "solver: " +
+         solver + "\n";
+}
+
+TEST(GeneralizedAlphaScene, SchemeAndRhoInfKeys) {
+  const Scene a = parse_scene(scene_with_solver("{type: implicit}"), "a.yaml");
+  EXPECT_EQ(a.solver.scheme, ImplicitScheme::BackwardEuler);
+  const Scene b = parse_scene(
+      scene_with_solver("{type: implicit, scheme: generalized_alpha, rho_inf: 0.5}"), "b.yaml");
+  EXPECT_EQ(b.solver.scheme, ImplicitScheme::GeneralizedAlpha);
+  EXPECT_EQ(b.solver.rho_inf, 0.5);
+  for (const char* bad : {"{type: implicit, scheme: hht}", "{type: implicit, rho_inf: 1.5}",
+                          "{type: implicit, rho_inf: -0.1}"}) {
+    try {
+      parse_scene(scene_with_solver(bad), "c.yaml");
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("c.yaml: solver."), std::string::npos) << what;
+    }
   }
 }
 
