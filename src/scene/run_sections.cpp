@@ -17,10 +17,14 @@ std::string solver_name(SolverKind kind) {
   return "static";
 }
 
+std::string scheme_name(ImplicitScheme scheme) {
+  return scheme == ImplicitScheme::GeneralizedAlpha ? "generalized_alpha" : "backward_euler";
+}
+
 SolverSettings read_solver_section(const Fields& root) {
   const Fields f(root.node("solver"), root.context("solver"),
                  {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol",
-                  "load_steps", "max_iterations", "tolerance"});
+                  "load_steps", "max_iterations", "tolerance", "scheme", "rho_inf"});
   SolverSettings s;
   const std::string type = f.word("type", "static");
   if (type == "static") {
@@ -40,6 +44,15 @@ SolverSettings read_solver_section(const Fields& root) {
   s.dt_max = f.number("dt_max", s.dt_max, non_negative("s (0: output_interval)"));
   s.rtol = f.number("rtol", s.rtol, positive(""));
   s.atol = f.number("atol", s.atol, positive("m and rad"));
+  const std::string scheme = f.word("scheme", scheme_name(s.scheme));
+  if (scheme == "generalized_alpha") {
+    s.scheme = ImplicitScheme::GeneralizedAlpha;
+  } else if (scheme == "backward_euler") {
+    s.scheme = ImplicitScheme::BackwardEuler;
+  } else {
+    f.fail("scheme", "'" + scheme + "'; allowed: generalized_alpha, backward_euler");
+  }
+  s.rho_inf = f.number("rho_inf", s.rho_inf, interval(0, 1, false, false));
   s.load_steps = f.integer("load_steps", s.load_steps, 1, 1000000);
   s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);
   s.tolerance = f.number("tolerance", s.tolerance, positive("(relative)"));

@@ -46,5 +46,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file);
 
 /// Name of a solver kind as written in scene files: static, implicit, explicit.
 std::string solver_name(SolverKind kind);
+/// Scene-file word of an implicit scheme: "backward_euler" or "generalized_alpha".
+std::string scheme_name(ImplicitScheme scheme);
 
 }  // namespace finseg

@@ -30,6 +30,8 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"dt_max_s", s.dt_max},
           {"rtol", s.rtol},
           {"atol", s.atol},
+          {"scheme", scheme_name(s.scheme)},
+          {"rho_inf", s.rho_inf},
           {"load_steps", s.load_steps},
           {"max_iterations", s.max_iterations},
           {"tolerance", s.tolerance}};

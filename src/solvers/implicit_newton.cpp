@@ -1,0 +1,85 @@
+#include "solvers/implicit_newton.hpp"
+
+#include <vector>
+
+#include "core/so3.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/linear_solve.hpp"
+
+namespace finseg {
+namespace {
+
+// d(w x J_W w)/dw = [w]x J_W - [J_W w]x per free body (rotation block only).
+Eigen::SparseMatrix<double> gyroscopic_jacobian(const Model& model, const State& state) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(9 * model.bodies.size());
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const Mat3 J_W = state.R_WB[i] * model.bodies[i].J_B * state.R_WB[i].transpose();
+    const Vec3& w = state.w_W[i];
+    const Mat3 G = hat<double>(w) * J_W - hat<double>(J_W * w);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) t.emplace_back(d + 3 + r, d + 3 + c, G(r, c));
+    }
+  }
+  Eigen::SparseMatrix<double> G(model.num_dofs, model.num_dofs);
+  G.setFromTriplets(t.begin(), t.end());
+  return G;
+}
+
+}  // namespace
+
+Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(model.num_dofs);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const Mat3 J_W = state.R_WB[i] * model.bodies[i].J_B * state.R_WB[i].transpose();
+    g.segment<3>(d + 3) = state.w_W[i].cross(J_W * state.w_W[i]);
+  }
+  return g;
+}
+
+void place_state(const Model& model, const State& start, double h, const Eigen::VectorXd& dq,
+                 const Eigen::VectorXd& v, State& state) {
+  state = start;
+  state.t = start.t + h;
+  set_drives_at_time(model, state, state.t);
+  apply_pose_increment(model, state, dq);
+  set_velocity(model, state, v);
+}
+
+bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
+                  const NewtonResidual& res, int max_iterations, double pose_tol,
+                  Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats) {
+  ForceJacobian jac;
+  for (int it = 1; it <= max_iterations; ++it) {
+    place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);
+    compute_forces(model, state, f, &jac);
+    ++stats.force_evaluations;
+    ++stats.jacobian_evaluations;
+    ++stats.newton_iterations;
+    const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
+    Eigen::VectorXd g = generalized_forces(model, f);
+    Eigen::SparseMatrix<double> dv = jac.dv;
+    if (res.with_gyro) {
+      g -= gyroscopic_forces(model, state);
+      dv -= gyroscopic_jacobian(model, state);
+    }
+    const Eigen::VectorXd r = M * x - res.b - res.s * g;
+    const Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
+    Eigen::VectorXd dx;
+    if (!r.allFinite() || !sparse_solve(A, -r, dx)) return false;
+    x += dx;
+    if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {
+      place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);
+      compute_forces(model, state, f);
+      ++stats.force_evaluations;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace finseg

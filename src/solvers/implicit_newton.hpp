@@ -1,0 +1,42 @@
+// Newton plumbing shared by the implicit schemes (backward Euler, generalized-alpha): each
+// step solves for one vector x of num_dofs unknowns on which the end-of-step pose increment
+// and velocity depend affinely, with the exact sparse Jacobian of the forces.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "solvers/solver.hpp"
+
+namespace finseg {
+
+/// End-of-step pose and velocity as affine functions of the unknown x:
+/// pose increment dq = dq0 + cq x (applied to the start state), velocity v = v0 + cv x.
+struct AffineStep {
+  Eigen::VectorXd dq0, v0;
+  double cq = 0, cv = 0;
+};
+
+/// Residual r(x) = M(q) x - b - s (g(q, v) - gyro(q, v)), gyro = (0, w_W x J_W w_W) when
+/// `with_gyro` (acceleration form) and 0 otherwise (momentum form).
+struct NewtonResidual {
+  Eigen::VectorXd b;
+  double s = 1;
+  bool with_gyro = false;
+};
+
+/// Places `state` at `start` advanced by `h` in time with pose increment dq and velocity v.
+void place_state(const Model& model, const State& start, double h, const Eigen::VectorXd& dq,
+                 const Eigen::VectorXd& v, State& state);
+
+/// Newton iterations on r(x) = 0 from the guess in `x`, stopping when the pose correction
+/// |cq dx|_inf falls below `pose_tol` (m and rad). On success leaves `state` at the solution
+/// with its forces in `f` and returns true; false when Newton fails (not finite, singular,
+/// or max_iterations reached).
+bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
+                  const NewtonResidual& res, int max_iterations, double pose_tol,
+                  Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats);
+
+/// Gyroscopic vector (0, w_W x J_W w_W) of the free bodies.
+Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state);
+
+}  // namespace finseg

@@ -1,0 +1,106 @@
+// The adaptive driver of the implicit solver, shared by its schemes: step size from the
+// scheme's local error estimate, cuts after rejected steps and Newton failures, outputs on
+// time, restarts of the scheme's history after contact events and crease snaps.
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/integrators.hpp"
+#include "solvers/step_limits.hpp"
+#include "solvers/time_stepper.hpp"
+
+namespace finseg {
+namespace {
+
+// True when an accepted step changed what the forces are made of: a crease opened or
+// closed, a contact point appeared, vanished or started or stopped sliding.
+bool history_event(const State& before, const State& after) {
+  for (size_t k = 0; k < before.history.size() && k < after.history.size(); ++k) {
+    if (before.history[k].openings != after.history[k].openings ||
+        before.history[k].opened != after.history[k].opened) {
+      return true;
+    }
+  }
+  const auto& a = before.contact.anchors;
+  const auto& b = after.contact.anchors;
+  if (a.size() != b.size()) return true;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].key != b[i].key || a[i].sliding != b[i].sliding) return true;
+  }
+  return false;
+}
+
+std::unique_ptr<TimeStepper> make_stepper(const SolverSettings& s, double tol) {
+  if (s.scheme == ImplicitScheme::GeneralizedAlpha) return make_generalized_alpha(s, tol);
+  return make_backward_euler(s, tol);
+}
+
+}  // namespace
+
+void run_implicit(const Model& model, State& state, const SolverSettings& settings,
+                  const OutputCallback& on_output, const ProgressCallback& on_progress,
+                  SolverStats& stats) {
+  const double every = output_interval(settings);
+  const double h_max = settings.dt_max > 0 ? settings.dt_max : every;
+  double h = settings.dt > 0 ? settings.dt : std::min(h_max, every / 10);
+  const double length_scale = std::max(model.sheet.length, 1e-3);
+  const double tol = settings.atol + settings.rtol * length_scale;
+  const std::unique_ptr<TimeStepper> stepper = make_stepper(settings, tol);
+  const double root = 1.0 / stepper->error_order();
+  set_drives_at_time(model, state, state.t);
+  commit_history(model, state);  // the start is a state the structure is in
+  BodyForces f;
+  compute_forces(model, state, f);
+  ++stats.force_evaluations;
+  stepper->begin(model, state, f);
+  // A run continued from a checkpoint keeps the interrupted run's output times.
+  const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
+  const double t0 = state.t;
+  double next_output = resumed ? state.solver.next_output : t0 + every;
+  state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+  on_output(state, f);
+  stats.smallest_step = h;
+  bool after_rejection = false;
+  while (state.t < settings.t_end - 1e-12 * every) {
+    const double h_try = std::min({h, next_output - state.t, settings.t_end - state.t});
+    require_step_advances(state.t, h_try, "implicit solver");
+    const State start = state;
+    const StepTry r = stepper->attempt(model, start, h_try, state, f, stats);
+    if (!r.converged || r.error > 1.0) {
+      state = start;
+      ++stats.rejected_steps;
+      after_rejection = true;
+      h = h_try * (r.converged ? std::max(0.2, 0.9 * std::pow(r.error, -root)) : 0.25);
+      if (h < settings.dt_min) {
+        throw DivergenceError(fmt::format(
+            "implicit solver: step fell below dt_min = {:.3g} s at t = {:.6g} s ({}); most "
+            "strained {}",
+            settings.dt_min, state.t, r.converged ? "local error too large" : "Newton failed",
+            most_strained_element(model, state)));
+      }
+      continue;
+    }
+    check_finite(model, state, f, "implicit solver");
+    commit_history(model, state);
+    stepper->accept(history_event(start, state));
+    ++stats.steps;
+    stats.smallest_step = std::min(stats.smallest_step, h_try);
+    stats.largest_step = std::max(stats.largest_step, h_try);
+    // No growth right after a rejection: the estimate that failed is still close (Hairer).
+    const double grown = h_try * std::clamp(0.9 * std::pow(std::max(r.error, 1e-12), -root), 0.2,
+                                            after_rejection ? 1.0 : 2.0);
+    after_rejection = false;
+    // A step shortened only to land on an output time says nothing about the next one.
+    h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
+    if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
+      next_output += every;
+      state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+      on_output(state, f);
+      on_progress((state.t - t0) / (settings.t_end - t0));
+    }
+  }
+}
+
+}  // namespace finseg
