@@ -4,6 +4,7 @@
 #include "elements/assembler.hpp"
 #include "elements/bushing.hpp"
 #include "elements/crease_history.hpp"
+#include "elements/pressure.hpp"
 
 namespace finseg {
 namespace {
@@ -83,6 +84,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   Assembler as(model, state, out, jac != nullptr, jac != nullptr && jac->with_velocity);
   add_force_elements(model, state, as);
   add_loads_and_gravity(model, state, as);
+  add_pressure_loads(model, state, as);
   add_drives(model, state, as);
   add_contact_forces(model, state, as);
   if (jac) {

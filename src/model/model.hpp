@@ -8,6 +8,7 @@
 #include "core/types.hpp"
 #include "model/contact_def.hpp"
 #include "model/crease_def.hpp"
+#include "model/pressure_def.hpp"
 
 namespace finseg {
 
@@ -103,6 +104,7 @@ struct Model {
   std::vector<LoadDef> loads;
   std::vector<DriveDef> drives;
   std::vector<ProbeDef> probes;
+  std::vector<PressureDef> pressures;  ///< pressure loads on segment faces
   ContactDef contact;
   Vec3 gravity_W = Vec3::Zero();  ///< m/s^2
 

@@ -23,6 +23,9 @@ Model read_structure(const Fields& root, bool& zigzag);
 /// when `probes:` is given).
 void read_attachments(const Fields& root, bool zigzag, Model& model);
 
+/// The `pressures:` section: pressure loads on panels or bodies (docs/scene.md).
+void read_pressures(const Fields& root, Model& model);
+
 /// The `solver:` section.
 SolverSettings read_solver_section(const Fields& root);
 

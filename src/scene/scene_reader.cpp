@@ -45,13 +45,14 @@ Scene parse_scene(const std::string& yaml, const std::string& file) {
   const Fields root(
       root_node, {file, ""},
       {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
-       "drives", "probes", "contact", "zigzag", "solver", "outputs"});
+       "drives", "probes", "contact", "zigzag", "solver", "outputs", "pressures"});
   Scene scene;
   scene.file = file;
   try {
     scene.title = root.word("title", "");
     scene.model = read_structure(root, scene.zigzag);
     read_attachments(root, scene.zigzag, scene.model);
+    read_pressures(root, scene.model);
     scene.solver = read_solver_section(root);
     scene.outputs = read_outputs_section(root, scene.model);
     check_run_size(scene, scene.zigzag ? "zigzag.pull_step" : "drives[0].step");

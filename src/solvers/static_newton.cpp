@@ -7,6 +7,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "core/error.hpp"
+#include "elements/pressure.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/linear_solve.hpp"
@@ -23,6 +24,7 @@ double force_scale(const Model& model) {
   double weight = 0;
   for (const BodyDef& b : model.bodies) weight += b.mass;
   f = std::max(f, weight * model.gravity_W.norm());
+  f = std::max(f, largest_pressure_force(model));
   for (const DriveDef& d : model.drives) {
     f = std::max(f, d.stiffness * std::max(d.step, 1e-3 * L));
   }
