@@ -8,12 +8,6 @@
 namespace finseg {
 namespace {
 
-int panel_count(const Model& m) {
-  int panels = 1;
-  for (const BodyDef& b : m.bodies) panels = std::max(panels, b.panel + 1);
-  return panels;
-}
-
 // `panels: [1, 3]` (1-based, as elsewhere in a scene) or `bodies: all` or `bodies: [names]`.
 std::vector<int> pressed_bodies(const Fields& f, const Model& m) {
   if (f.has("panels") == f.has("bodies")) f.fail("panels", "give either panels: [..] or bodies");
