@@ -7,6 +7,7 @@
 #include "collision/contact_forces.hpp"
 #include "core/so3.hpp"
 #include "elements/element_load.hpp"
+#include "probes/segment_fields.hpp"
 #include "solvers/dofs.hpp"
 
 namespace finseg {
@@ -172,7 +173,11 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
     if (!tables_[k].pairs) continue;
     for (const ContactPairForce& p : contact.pairs) tables_[k].pair_rows.push_back({last_x_, p});
   }
-  if (options_.frames) frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W});
+  if (options_.frames) {
+    frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W, state.v_W, state.w_W,
+                       segment_fields(model_, state, forces, contact), contact.point_normal,
+                       contact.point_penetration, contact.point_friction});
+  }
   if (options_.phases && !model_.drives.empty()) {
     samples_.push_back(
         {state.drive_s[0], contact.active, watched_bend(model_, state, options_.watched_panels)});
