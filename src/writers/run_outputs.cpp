@@ -6,9 +6,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/warnings.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/html_animation.hpp"
 #include "writers/plot.hpp"
+#include "writers/provenance.hpp"
 #include "writers/vtk.hpp"
 
 namespace finseg {
@@ -254,6 +256,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                    {"files", report.files},
                    {"warnings", report.warnings}};
   if (o.phases.enabled) j["phases"] = phases_json(phases, o.phases);
+  j["provenance"] = provenance_json(scene);
+  for (const std::string& w : recorded_warnings()) j["warnings"].push_back(w);
   write_file_atomically((fs::path(dir) / "summary.json").string(), j.dump(2) + "\n");
   report.files.push_back("summary.json");
   return report;
