@@ -12,6 +12,7 @@
 #include "elements/bushing.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/measured.hpp"
+#include "probes/recorder.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -169,8 +170,12 @@ TEST(CreaseStatic, LoadStepsDoNotAdvanceTheOpeningCount) {
 // 2 psi0); one free end pinned, the other pulled along the line joining the ends. Virtual
 // work on U = k/2 (2 psi - 2 psi0)^2 with end distance d = 2 a cos psi gives
 //   F = 2 k (psi0 - psi) / (a sin psi).
-TEST(CreaseStatic, TwoPanelsPulledOpenFollowClosedForm) {
-  const double a = 0.06, k = 0.01, psi0 = 60 * kDegToRad, psi_end = 4 * kDegToRad;
+constexpr double kPanel = 0.06, kCreaseK = 0.01, kPsi0 = 60 * kDegToRad, kPsiEnd = 4 * kDegToRad;
+
+// Two panels of length kPanel at +-kPsi0 from the pulling line (x axis), pinned at the
+// origin, joined by a linear crease (rest fold angle 2 kPsi0); drive `pull` at the far end.
+Model two_panel_model() {
+  const double a = kPanel, k = kCreaseK, psi0 = kPsi0, psi_end = kPsiEnd;
   Model m;
   m.bodies = {plate("ground", 0.01), plate("panel1", a), plate("panel2", a)};
   m.bodies[0].fixed = true;
@@ -207,7 +212,13 @@ TEST(CreaseStatic, TwoPanelsPulledOpenFollowClosedForm) {
   drive.step = drive.travel / 80;
   m.drives.push_back(drive);
   m.finalize_dofs();
+  return m;
+}
 
+TEST(CreaseStatic, TwoPanelsPulledOpenFollowClosedForm) {
+  const double a = kPanel, k = kCreaseK, psi0 = kPsi0;
+  const Model m = two_panel_model();
+  const DriveDef& drive = m.drives[0];
   State st = initial_state(m);
   SolverSettings set;
   set.kind = SolverKind::Static;
@@ -285,6 +296,85 @@ TEST(CreaseStatic, SettleDoesNotOpenTheCrease) {
   EXPECT_LT(theta_max, 76.5);
   EXPECT_FALSE(opened_on_path);
   EXPECT_FALSE(st.history[0].opened);
+}
+
+// The crease, element and pose probes on the same pull: the crease probe's angle is the
+// panels' geometric angle 2 psi and its moment k (2 psi - 2 psi0) = -F a sin psi (the
+// closed form above); the crease element balances the drive on panel 2 (force -F, moment
+// -(end - P+) x F about its point P+, in the element frame F = panel 1's frame); the pose
+// probe gives panel 2's centroid and its rotation psi about +y.
+TEST(CreaseStatic, CreaseElementAndPoseProbesMatchTheStatics) {
+  const double a = kPanel, k = kCreaseK, psi0 = kPsi0;
+  Model m = two_panel_model();
+  m.probes = {{"fold", ProbeKind::Crease, -1, Vec3::Zero(), -1, false, 0, -1},
+              {"joint", ProbeKind::Element, -1, Vec3::Zero(), -1, false, -1, 1},
+              {"panel2", ProbeKind::Pose, 2, Vec3::Zero(), -1, false, -1, -1}};
+  State st = initial_state(m);
+  SolverSettings set;
+  set.kind = SolverKind::Static;
+  set.tolerance = 1e-12;
+  RunRecorder rec(m, set, {});
+  int checked = 0;
+  const SolverStats stats = run_solver(m, st, set, [&](const State& s, const BodyForces& f) {
+    rec.record(s, f);
+    const auto& crease = rec.tables()[0].rows.back();
+    const auto& element = rec.tables()[1].rows.back();
+    const auto& pose = rec.tables()[2].rows.back();
+    const Vec3 x1 = s.R_WB[1].col(0);
+    const double psi = std::atan2(x1.z(), x1.x());
+    EXPECT_NEAR(crease[1], 2 * psi / kDegToRad, 1e-6);
+    EXPECT_NEAR(crease[2], 180 - 2 * psi / kDegToRad, 1e-6);
+    const Vec3 F = drive_force(m, s, 0);
+    EXPECT_NEAR(crease[3], k * (2 * psi - 2 * psi0), 1e-9);
+    EXPECT_NEAR(crease[3], -F.x() * a * std::sin(psi), 1e-6 * k * 2 * (psi0 - psi) + 1e-12);
+
+    const Mat3 R_WF = s.R_WB[1];
+    const Vec3 Pp = s.p_W[2] + s.R_WB[2] * Vec3(-a / 2, 0, 0);
+    const Vec3 end = s.p_W[2] + s.R_WB[2] * Vec3(a / 2, 0, 0);
+    const Vec3 force_F = R_WF.transpose() * -F;
+    const Vec3 moment_F = R_WF.transpose() * -(end - Pp).cross(F);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(element[1 + i], force_F[i], 1e-7 + 1e-6 * F.norm()) << i;
+      EXPECT_NEAR(element[4 + i], moment_F[i], 1e-9 + 1e-6 * F.norm() * a) << i;
+    }
+
+    const Vec3 x2 = s.R_WB[2].col(0);
+    const double psi2 = std::atan2(-x2.z(), x2.x());  // panel 2 turned by +psi2 about +y
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(pose[1 + i], s.p_W[2][i], 1e-15);
+    EXPECT_NEAR(pose[4], std::cos(psi2 / 2), 1e-12);
+    EXPECT_NEAR(pose[6], std::sin(psi2 / 2), 1e-12);
+    EXPECT_NEAR(pose[9], psi2, 1e-12);
+    EXPECT_NEAR(std::hypot(pose[5], pose[7]), 0, 1e-9);
+    ++checked;
+  });
+  ASSERT_EQ(stats.status, "ok") << stats.message;
+  EXPECT_GE(checked, 80);
+  EXPECT_EQ(rec.tables()[0].columns,
+            (std::vector<std::string>{"pull_displacement_m", "fold_angle_deg", "opening_angle_deg",
+                                      "moment_Nm"}));
+}
+
+// A pose probe on a body turned about a general axis: quaternion (w >= 0) and rotation
+// vector of the axis-angle pair.
+TEST(PoseProbe, QuaternionAndRotationVectorOfAGeneralRotation) {
+  Model m;
+  m.bodies = {plate("b", 0.02)};
+  const Vec3 axis = Vec3(1, -2, 3).normalized();
+  const double angle = 2.5;  // rad, beyond pi/2 so that the sign convention matters
+  m.bodies[0].R0_WB = so3_exp<double>(Vec3(angle * axis));
+  m.bodies[0].p0_W = Vec3(0.1, 0.2, 0.3);
+  m.probes = {{"pose", ProbeKind::Pose, 0, Vec3::Zero(), -1, false, -1, -1}};
+  m.finalize_dofs();
+  RunRecorder rec(m, SolverSettings{}, {});
+  rec.record(initial_state(m), BodyForces{});
+  const auto& r = rec.tables()[0].rows.back();
+  EXPECT_EQ(r[1], 0.1);
+  EXPECT_EQ(r[3], 0.3);
+  EXPECT_NEAR(r[4], std::cos(angle / 2), 1e-14);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(r[5 + i], std::sin(angle / 2) * axis[i], 1e-14);
+    EXPECT_NEAR(r[8 + i], angle * axis[i], 1e-12);
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "vtk_read_util.hpp"
 #include "writer_test_model.hpp"
 #include "writers/vtk.hpp"
 
@@ -29,16 +30,9 @@ std::string attr(const std::string& xml, const std::string& name) {
   return writer_test::xml_attr(xml, name);
 }
 
-/// The numbers inside <DataArray ... Name="name" ...>...</DataArray>.
+/// The values of a DataArray, decoded from the binary appended section.
 std::vector<double> data_array(const std::string& xml, const std::string& name) {
-  const std::size_t tag = xml.find("Name=\"" + name + "\"");
-  if (tag == std::string::npos) return {};
-  const std::size_t open = xml.find('>', tag) + 1;
-  const std::size_t close = xml.find("</DataArray>", open);
-  std::istringstream in(xml.substr(open, close - open));
-  std::vector<double> v;
-  for (double x; in >> x;) v.push_back(x);
-  return v;
+  return vtk_read::array(xml, name);
 }
 
 Model two_box_model() {

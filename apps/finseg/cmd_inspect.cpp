@@ -19,6 +19,24 @@ struct InspectOptions {
 };
 
 // S_ik = +1 if body i is the inner body e+(k) of element k, -1 if the outer e-(k), else 0.
+// What a probe watches, in words.
+std::string probe_target(const Model& m, const ProbeDef& p) {
+  switch (p.kind) {
+    case ProbeKind::Point:
+      return "point on " + m.bodies[p.body].name;
+    case ProbeKind::Drive:
+      return "drive " + m.drives[p.drive].name;
+    case ProbeKind::Crease:
+      return fmt::format("crease {}", p.crease + 1);
+    case ProbeKind::Element:
+      return "element " + m.elements[p.element].name;
+    case ProbeKind::Pose:
+      return "pose of " + m.bodies[p.body].name;
+    default:
+      return "whole model";
+  }
+}
+
 std::string incidence_csv(const Model& m) {
   std::string out = "body";
   for (const ElementDef& e : m.elements) out += "," + e.name;
@@ -66,12 +84,7 @@ void inspect(const InspectOptions& o) {
     fmt::print("  drive {}: body {}, travel {:.6g} m, step {:.6g} m, stiffness {:.6g} N/m\n",
                d.name, m.bodies[d.body].name, d.travel, d.step, d.stiffness);
   }
-  for (const ProbeDef& p : m.probes) {
-    fmt::print("  probe {} ({})\n", p.name,
-               p.kind == ProbeKind::Point   ? "point on " + m.bodies[p.body].name
-               : p.kind == ProbeKind::Drive ? "drive " + m.drives[p.drive].name
-                                            : std::string("whole model"));
-  }
+  for (const ProbeDef& p : m.probes) fmt::print("  probe {} ({})\n", p.name, probe_target(m, p));
   if (!o.incidence.empty()) {
     write_file_atomically(o.incidence, incidence_csv(m));
     fmt::print("wrote {} (incidence S^c: {} bodies x {} elements)\n", o.incidence, m.bodies.size(),

@@ -1,6 +1,6 @@
-// finseg modes SCENE [--count N] [--out FILE.csv]: natural frequencies (Hz) of small
-// vibrations about the static equilibrium under the scene's loads and gravity (drives held
-// at their start).
+// finseg modes SCENE [--count N] [--out FILE.csv] [--vtk DIR]: natural frequencies (Hz) of
+// small vibrations about the static equilibrium under the scene's loads and gravity (drives
+// held at their start), and optionally the mode shapes as VTK (docs/vtk.md).
 #include <fmt/format.h>
 
 #include <memory>
@@ -9,14 +9,16 @@
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
 #include "scene/scene_reader.hpp"
+#include "solvers/modes.hpp"
 #include "writers/atomic_write.hpp"
+#include "writers/vtk.hpp"
 
 namespace finseg::cli {
 
 namespace {
 
 struct ModesOptions {
-  std::string scene, out;
+  std::string scene, out, vtk;
   int count = 6;
 };
 
@@ -32,7 +34,16 @@ void modes(const ModesOptions& o) {
     fmt::print(stderr, "finseg: error: {}: no static equilibrium: {}\n", o.scene, stats.message);
     throw ExitStatus{3};
   }
-  const std::vector<double> hz = natural_frequencies(m, state, o.count);
+  std::vector<double> hz;
+  std::vector<ModeShape> shapes;
+  if (o.vtk.empty()) {
+    hz = natural_frequencies(m, state, o.count);
+  } else {
+    for (const Mode& mode : natural_modes(m, state, o.count)) {
+      hz.push_back(mode.frequency_hz);
+      shapes.push_back(mode_shape(m, state, mode));
+    }
+  }
   std::string csv = "mode,frequency_Hz\n";
   fmt::print("{:>5} {:>16}\n", "mode", "frequency_Hz");
   for (std::size_t i = 0; i < hz.size(); ++i) {
@@ -42,6 +53,11 @@ void modes(const ModesOptions& o) {
   if (!o.out.empty()) {
     write_file_atomically(o.out, csv);
     fmt::print("wrote {}\n", o.out);
+  }
+  if (!o.vtk.empty()) {
+    write_vtk_modes(o.vtk, "modes", m, Frame{0, state.p_W, state.R_WB, {}, {}, {}, {}, {}, {}, {}},
+                    shapes);
+    fmt::print("wrote {}/modes.pvd ({} mode shapes)\n", o.vtk, shapes.size());
   }
 }
 
@@ -54,6 +70,7 @@ void register_modes(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "scene file")->required();
   cmd->add_option("--count", o->count, "number of modes")->check(CLI::Range(1, 100000));
   cmd->add_option("--out", o->out, "also write mode,frequency_Hz as CSV");
+  cmd->add_option("--vtk", o->vtk, "also write the mode shapes as DIR/modes.pvd + .vtu");
   cmd->callback([o] { modes(*o); });
 }
 

@@ -4,9 +4,12 @@
 #include <exception>
 
 #include "apps/finseg/commands.hpp"
+#include "core/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"finseg: finite-segment simulation of folded flexible sheets"};
+  app.set_version_flag(
+      "--version", fmt::format("finseg {} (git {})", finseg::version(), finseg::git_revision()));
   app.require_subcommand(1);
   finseg::cli::register_run(app);
   finseg::cli::register_gen(app);

@@ -368,6 +368,9 @@ ContactSummary contact_summary(const Model& model, const State& state) {
       s.total_friction_force += r.friction;
       s.max_penetration = std::max(s.max_penetration, r.depth);
       s.points_W.push_back(r.x_W);
+      s.point_normal.push_back(r.normal);
+      s.point_penetration.push_back(r.depth);
+      s.point_friction.push_back(r.friction);
       ++pair.points;
       pair.normal_force += r.normal;
       pair.friction_force += r.friction;

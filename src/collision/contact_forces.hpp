@@ -28,12 +28,15 @@ struct ContactPairForce {
 
 /// What the contact probes record.
 struct ContactSummary {
-  int active = 0;                       ///< number of contact points with positive penetration
-  double total_normal_force = 0;        ///< N
-  double total_friction_force = 0;      ///< N (sum of magnitudes)
-  double max_penetration = 0;           ///< m
-  std::vector<Vec3> points_W;           ///< active contact points, m
-  std::vector<ContactPairForce> pairs;  ///< touching pairs, in body order
+  int active = 0;                         ///< number of contact points with positive penetration
+  double total_normal_force = 0;          ///< N
+  double total_friction_force = 0;        ///< N (sum of magnitudes)
+  double max_penetration = 0;             ///< m
+  std::vector<Vec3> points_W;             ///< active contact points, m
+  std::vector<double> point_normal;       ///< per point: normal force, N
+  std::vector<double> point_penetration;  ///< per point: penetration, m
+  std::vector<double> point_friction;     ///< per point: friction force magnitude, N
+  std::vector<ContactPairForce> pairs;    ///< touching pairs, in body order
 };
 ContactSummary contact_summary(const Model& model, const State& state);
 

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/types.hpp"
 #include "model/crease_def.hpp"
@@ -54,6 +55,8 @@ class CreaseLaw {
   virtual OpeningRule opening_rule() const { return {}; }
   /// True: the law's angle is phi = s * alpha (the crease's own direction); false: alpha.
   virtual bool direction_relative() const { return false; }
+  /// Data files the law was read from (as opened), for provenance; none by default.
+  virtual std::vector<std::string> data_files() const { return {}; }
 };
 
 /// Fold direction of a crease: the sign of its initial fold angle, +1 when flat.

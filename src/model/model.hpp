@@ -74,16 +74,18 @@ struct DriveDef {
   double deployed_at = 0;
 };
 
-enum class ProbeKind { Point, Drive, Reaction, Energy, Contact };
+enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose };
 
 /// Something a user wants recorded over the run (one CSV per probe).
 struct ProbeDef {
   std::string name;
   ProbeKind kind = ProbeKind::Point;
-  int body = -1;                ///< Point: body carrying the point
+  int body = -1;                ///< Point: body carrying the point; Pose: the body
   Vec3 point_B = Vec3::Zero();  ///< Point: position in the body frame
   int drive = -1;               ///< Drive: which drive's gauge
   bool pairs = false;           ///< Contact: also record each touching pair's forces
+  int crease = -1;              ///< Crease: index into Model::creases
+  int element = -1;             ///< Element: index into Model::elements
 };
 
 /// Description of the flat sheet a model was cut from (used by writers and probes).

@@ -2,7 +2,12 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "collision/contact_forces.hpp"
+#include "core/so3.hpp"
+#include "elements/element_load.hpp"
+#include "probes/segment_fields.hpp"
 #include "solvers/dofs.hpp"
 
 namespace finseg {
@@ -23,6 +28,12 @@ std::string probe_kind_name(ProbeKind kind) {
       return "reaction";
     case ProbeKind::Energy:
       return "energy";
+    case ProbeKind::Crease:
+      return "crease";
+    case ProbeKind::Element:
+      return "element";
+    case ProbeKind::Pose:
+      return "pose";
     case ProbeKind::Contact:
       break;
   }
@@ -46,10 +57,41 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
           x, "force_x_N", "force_y_N", "force_z_N", "moment_x_Nm", "moment_y_Nm", "moment_z_Nm"};
     case ProbeKind::Energy:
       return {x, "potential_J", "kinetic_J", "total_J"};
+    case ProbeKind::Crease:
+      return {x, "fold_angle_deg", "opening_angle_deg", "moment_Nm"};
+    case ProbeKind::Element:
+      return {
+          x, "force_x_N", "force_y_N", "force_z_N", "moment_x_Nm", "moment_y_Nm", "moment_z_Nm"};
+    case ProbeKind::Pose:
+      return {x, "x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "rx_rad", "ry_rad", "rz_rad"};
     case ProbeKind::Contact:
       break;
   }
   return {x, "active_points", "normal_force_N", "friction_force_N", "max_penetration_m"};
+}
+
+// Crease probe: mean fold and opening angle over the crease's elements (they differ only
+// when the crease line twists), total moment about the crease line.
+std::vector<double> crease_row(double x, const Model& model, const State& s,
+                               const std::vector<int>& elements) {
+  double fold = 0, opening = 0, moment = 0;
+  for (int k : elements) {
+    const ElementLoad l = element_load(model, s, k);
+    fold += l.fold_angle;
+    opening += l.opening_angle;
+    moment += l.crease_moment;
+  }
+  const double n = static_cast<double>(elements.size());
+  return {x, fold / n / kDegToRad, opening / n / kDegToRad, moment};
+}
+
+// Pose probe: centroid, unit quaternion (w >= 0) and rotation vector of R_WB.
+std::vector<double> pose_row(double x, const Vec3& p_W, const Mat3& R_WB) {
+  Eigen::Quaterniond q(R_WB);
+  q.normalize();
+  if (q.w() < 0) q.coeffs() *= -1;
+  const Vec3 r = so3_log<double>(R_WB);
+  return {x, p_W.x(), p_W.y(), p_W.z(), q.w(), q.x(), q.y(), q.z(), r.x(), r.y(), r.z()};
 }
 
 }  // namespace
@@ -64,11 +106,14 @@ RunRecorder::RunRecorder(const Model& model, const SolverSettings& settings,
   for (const ProbeDef& p : model.probes) {
     const bool pairs = p.pairs && p.kind == ProbeKind::Contact;
     tables_.push_back({p.name, p.kind, columns_of(p.kind, abscissa_), {}, pairs, {}});
+    crease_elements_.push_back(p.kind == ProbeKind::Crease ? crease_elements(model, p.crease)
+                                                           : std::vector<int>{});
   }
 }
 
-std::vector<double> RunRecorder::row(const ProbeDef& p, const State& s, const BodyForces& f,
+std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const BodyForces& f,
                                      const ContactSummary* contact) const {
+  const ProbeDef& p = model_.probes[probe];
   const double x = last_x_;
   switch (p.kind) {
     case ProbeKind::Point: {
@@ -97,6 +142,20 @@ std::vector<double> RunRecorder::row(const ProbeDef& p, const State& s, const Bo
       const double kinetic = dynamic_ ? kinetic_energy(model_, s) : 0.0;
       return {x, f.potential_energy, kinetic, f.potential_energy + kinetic};
     }
+    case ProbeKind::Crease:
+      return crease_row(x, model_, s, crease_elements_[probe]);
+    case ProbeKind::Element: {
+      const ElementLoad l = element_load(model_, s, p.element);
+      return {x,
+              l.force_F.x(),
+              l.force_F.y(),
+              l.force_F.z(),
+              l.moment_F.x(),
+              l.moment_F.y(),
+              l.moment_F.z()};
+    }
+    case ProbeKind::Pose:
+      return pose_row(x, s.p_W[p.body], s.R_WB[p.body]);
     case ProbeKind::Contact:
       break;
   }
@@ -110,11 +169,15 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
   ContactSummary contact;
   if (model_.contact.enabled) contact = contact_summary(model_, state);
   for (std::size_t k = 0; k < tables_.size(); ++k) {
-    tables_[k].rows.push_back(row(model_.probes[k], state, forces, &contact));
+    tables_[k].rows.push_back(row(k, state, forces, &contact));
     if (!tables_[k].pairs) continue;
     for (const ContactPairForce& p : contact.pairs) tables_[k].pair_rows.push_back({last_x_, p});
   }
-  if (options_.frames) frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W});
+  if (options_.frames) {
+    frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W, state.v_W, state.w_W,
+                       segment_fields(model_, state, forces, contact), contact.point_normal,
+                       contact.point_penetration, contact.point_friction});
+  }
   if (options_.phases && !model_.drives.empty()) {
     samples_.push_back(
         {state.drive_s[0], contact.active, watched_bend(model_, state, options_.watched_panels)});

@@ -67,7 +67,7 @@ class RunRecorder {
                std::vector<PhaseSample> samples, double last_x, std::size_t outputs);
 
  private:
-  std::vector<double> row(const ProbeDef& p, const State& s, const BodyForces& f,
+  std::vector<double> row(std::size_t probe, const State& s, const BodyForces& f,
                           const ContactSummary* contact) const;
 
   const Model& model_;
@@ -75,6 +75,7 @@ class RunRecorder {
   std::string abscissa_;
   bool dynamic_ = false;
   std::vector<ProbeTable> tables_;
+  std::vector<std::vector<int>> crease_elements_;  ///< per probe: a crease probe's elements
   std::vector<Frame> frames_;
   std::vector<PhaseSample> samples_;
   double last_x_;

@@ -109,15 +109,16 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
 }
 
 ProbeKind probe_kind(const Fields& f) {
-  static const std::map<std::string, ProbeKind> kinds{{"point", ProbeKind::Point},
-                                                      {"drive", ProbeKind::Drive},
-                                                      {"reaction", ProbeKind::Reaction},
-                                                      {"energy", ProbeKind::Energy},
-                                                      {"contact", ProbeKind::Contact}};
+  static const std::map<std::string, ProbeKind> kinds{
+      {"point", ProbeKind::Point},       {"drive", ProbeKind::Drive},
+      {"reaction", ProbeKind::Reaction}, {"energy", ProbeKind::Energy},
+      {"contact", ProbeKind::Contact},   {"crease", ProbeKind::Crease},
+      {"element", ProbeKind::Element},   {"pose", ProbeKind::Pose}};
   const std::string type = f.required_word("type");
   const auto it = kinds.find(type);
   if (it == kinds.end()) {
-    f.fail("type", quoted(type) + "; allowed: point, drive, reaction, energy, contact");
+    f.fail("type", quoted(type) +
+                       "; allowed: point, drive, reaction, energy, contact, crease, element, pose");
   }
   return it->second;
 }
@@ -143,13 +144,33 @@ void check_file_names(const Fields& f, const ProbeDef& p, const std::vector<Prob
   }
 }
 
+// Crease, element and pose probes: which crease (1-based), element or body they watch.
+void read_target(const Fields& f, const Model& m, ProbeDef& p) {
+  if (p.kind == ProbeKind::Crease) {
+    if (m.creases.empty()) f.fail("type", "crease probe, but the model has no crease");
+    p.crease = f.integer("crease", -1, 1, static_cast<int>(m.creases.size())) - 1;
+    if (p.crease < 0) f.fail("crease", fmt::format("required: 1 .. {}", m.creases.size()));
+  } else if (p.kind == ProbeKind::Element) {
+    const std::string name = f.required_word("element");
+    for (std::size_t k = 0; k < m.elements.size(); ++k) {
+      if (m.elements[k].name == name) p.element = static_cast<int>(k);
+    }
+    if (p.element < 0) {
+      f.fail("element",
+             "'" + name + "' is not a force element (finseg inspect --incidence lists them)");
+    }
+  } else if (p.kind == ProbeKind::Pose) {
+    p.body = body_by_name(m, f.required_word("body"), f.context("body"));
+  }
+}
+
 void read_probes(const Fields& root, Model& m) {
   if (!root.has("probes")) return;  // keep the generator's probes
   m.probes.clear();
   const auto items = sequence(root.node("probes"), root.context("probes"), "probes");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Fields f(items[i], {root.context().file, item_field("probes", i)},
-                   {"name", "type", "at", "body", "point", "drive", "pairs"});
+                   {"name", "type", "at", "body", "point", "drive", "pairs", "crease", "element"});
     ProbeDef p;
     p.name = f.required_word("name");
     if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
@@ -159,6 +180,10 @@ void read_probes(const Fields& root, Model& m) {
     p.kind = probe_kind(f);
     p.pairs = f.flag("pairs", false);
     if (f.has("pairs") && p.kind != ProbeKind::Contact) f.fail("pairs", "only for type: contact");
+    if (f.has("crease") && p.kind != ProbeKind::Crease) f.fail("crease", "only for type: crease");
+    if (f.has("element") && p.kind != ProbeKind::Element) {
+      f.fail("element", "only for type: element");
+    }
     check_file_names(f, p, m.probes);
     if (p.kind == ProbeKind::Point) {
       const MaterialPoint at = read_location(f, m);
@@ -170,6 +195,8 @@ void read_probes(const Fields& root, Model& m) {
         if (m.drives[d].name == drive) p.drive = static_cast<int>(d);
       }
       if (p.drive < 0) f.fail("drive", quoted(drive) + " is not a drive of the scene");
+    } else {
+      read_target(f, m, p);
     }
     m.probes.push_back(p);
   }

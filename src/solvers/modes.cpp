@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
+#include "solvers/modes.hpp"
 
 namespace finseg {
 namespace {
@@ -19,21 +20,42 @@ Eigen::SparseMatrix<double> stiffness_matrix(const Model& model, const State& st
   return Eigen::SparseMatrix<double>(0.5 * (K + Eigen::SparseMatrix<double>(K.transpose())));
 }
 
-}  // namespace
-
-std::vector<double> natural_frequencies(const Model& model, const State& state, int count) {
-  if (model.num_dofs == 0) return {};
+// Dense generalized eigensolver of K x = w^2 M x (eigenvalues ascending).
+Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modal_solve(const Model& model,
+                                                                      const State& state,
+                                                                      int options) {
   if (model.num_dofs > 6000) {
     throw InputError(model.source, "modes", "dense modal analysis is limited to 1000 segments");
   }
   const Eigen::MatrixXd K = stiffness_matrix(model, state);
   const Eigen::MatrixXd M = mass_matrix(model, state);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M, Eigen::EigenvaluesOnly);
+  return Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(K, M, options);
+}
+
+double hz_of(double eigenvalue) {
+  return std::sqrt(std::max(0.0, eigenvalue)) / (2 * kPi);
+}
+
+}  // namespace
+
+std::vector<double> natural_frequencies(const Model& model, const State& state, int count) {
+  if (model.num_dofs == 0) return {};
+  const auto es = modal_solve(model, state, Eigen::EigenvaluesOnly);
   std::vector<double> hz;
   for (int i = 0; i < es.eigenvalues().size() && static_cast<int>(hz.size()) < count; ++i) {
-    hz.push_back(std::sqrt(std::max(0.0, es.eigenvalues()[i])) / (2 * kPi));
+    hz.push_back(hz_of(es.eigenvalues()[i]));
   }
   return hz;
+}
+
+std::vector<Mode> natural_modes(const Model& model, const State& state, int count) {
+  if (model.num_dofs == 0) return {};
+  const auto es = modal_solve(model, state, Eigen::ComputeEigenvectors);
+  std::vector<Mode> modes;
+  for (int i = 0; i < es.eigenvalues().size() && static_cast<int>(modes.size()) < count; ++i) {
+    modes.push_back({hz_of(es.eigenvalues()[i]), es.eigenvectors().col(i)});
+  }
+  return modes;
 }
 
 double highest_frequency(const Model& model, const State& state) {

@@ -8,12 +8,30 @@
 
 namespace finseg {
 
+/// What acts on each segment at one output (VTK cell data). Every vector has one entry per
+/// body, or is empty when not recorded.
+struct SegmentFields {
+  std::vector<Vec3> force_W;             ///< resultant force on the segment (everything), N
+  std::vector<Vec3> moment_W;            ///< resultant moment about its centroid, N m
+  std::vector<double> element_force;     ///< largest |force| among its force elements, N
+  std::vector<double> element_moment;    ///< largest |moment| among its force elements, N m
+  std::vector<double> crease_opening;    ///< opening angle of a bordering crease, rad; NaN: none
+  std::vector<double> crease_moment;     ///< that crease element's law moment, N m; NaN: none
+  std::vector<double> contact_normal;    ///< contact normal force on the segment, N
+  std::vector<double> contact_friction;  ///< contact friction force magnitudes, N
+};
+
 /// One recorded configuration of all bodies.
 struct Frame {
   double t = 0;                        ///< time (s) or drive displacement (m) for quasi-static runs
   std::vector<Vec3> p_W;               ///< body centroids, m
-  std::vector<Mat3> R_WB;              ///< body orientations
+  std::vector<Mat3> R_WB;              ///< orientations
   std::vector<Vec3> contact_points_W;  ///< active contact points, m (may be empty)
+  std::vector<Vec3> v_W;               ///< centroid velocities, m/s (may be empty)
+  std::vector<Vec3> w_W;               ///< angular velocities, world frame, rad/s (with v_W)
+  SegmentFields segments;              ///< per-segment loads (may be empty)
+  /// Per contact point, parallel to contact_points_W (may be empty): N, m, N.
+  std::vector<double> contact_normal, contact_penetration, contact_friction;
 };
 
 /// An x-y curve shown beside an animation (e.g. gauge force against pull displacement).

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/warnings.hpp"
 #include "probes/deployment_peak.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/html_animation.hpp"
 #include "writers/plot.hpp"
+#include "writers/provenance.hpp"
 #include "writers/vtk.hpp"
 
 namespace finseg {
@@ -316,6 +318,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                    {"files", report.files},
                    {"warnings", report.warnings}};
   if (o.phases.enabled) j["phases"] = phases_json(phases, o.phases);
+  j["provenance"] = provenance_json(scene);
+  for (const std::string& w : recorded_warnings()) j["warnings"].push_back(w);
   // Invalid UTF-8 is refused before the run (writers/output_folder.hpp); should any text
   // still carry some, the summary must not be lost for it.
   write_file_atomically((fs::path(dir) / "summary.json").string(),

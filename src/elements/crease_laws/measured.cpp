@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "core/warnings.hpp"
 
 namespace finseg {
 
@@ -99,12 +100,12 @@ void MeasuredCreaseLaw::check_range(double theta, int opening) const {
     constexpr double kSlack = 1e-6;  // rad
     if (theta < m.theta_min() - kSlack || theta > m.theta_max() + kSlack) {
       if (!warned_.exchange(true)) {
-        fmt::print(stderr,
-                   "finseg: warning: crease law {}: opening angle {:.4g} deg outside the "
-                   "measured {:.4g}..{:.4g} deg (pressing time {} s, opening {}); continuing "
-                   "linearly with the end slope (warned once)\n",
-                   source_, theta / kDegToRad, m.theta_min() / kDegToRad, m.theta_max() / kDegToRad,
-                   pressing_times_[ip], std::min<int>(opening, static_cast<int>(c.size())));
+        warn(fmt::format(
+            "crease law {}: opening angle {:.4g} deg outside the "
+            "measured {:.4g}..{:.4g} deg (pressing time {} s, opening {}); continuing "
+            "linearly with the end slope (warned once)",
+            source_, theta / kDegToRad, m.theta_min() / kDegToRad, m.theta_max() / kDegToRad,
+            pressing_times_[ip], std::min<int>(opening, static_cast<int>(c.size()))));
       }
       return;
     }

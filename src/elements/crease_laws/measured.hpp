@@ -56,6 +56,7 @@ class MeasuredCreaseLaw final : public CreaseLaw {
   double energy(double phi, const ElementHistory& history, double t) const override;
   OpeningRule opening_rule() const override { return options_.rule; }
   bool direction_relative() const override { return true; }
+  std::vector<std::string> data_files() const override { return {source_}; }
   std::string describe() const override;
 
   /// M(theta) and dM/dtheta in the data's terms (opening angle theta, rad) for a given
@@ -96,6 +97,7 @@ class RelaxingCreaseLaw final : public CreaseLaw {
   double energy(double phi, const ElementHistory& history, double t) const override;
   OpeningRule opening_rule() const override { return base_->opening_rule(); }
   bool direction_relative() const override { return base_->direction_relative(); }
+  std::vector<std::string> data_files() const override { return base_->data_files(); }
   std::string describe() const override;
 
  private:

@@ -1,0 +1,77 @@
+#include "writers/provenance.hpp"
+
+#include <openssl/evp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include "core/version.hpp"
+#include "elements/crease_law.hpp"
+
+namespace finseg {
+
+std::string sha256_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot be read for its hash");
+  const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(),
+                                                                    &EVP_MD_CTX_free);
+  if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) {
+    throw std::runtime_error("SHA-256 unavailable (OpenSSL)");
+  }
+  std::vector<char> buf(1 << 16);
+  while (in) {
+    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+    EVP_DigestUpdate(ctx.get(), buf.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  unsigned char md[EVP_MAX_MD_SIZE];
+  unsigned int len = 0;
+  EVP_DigestFinal_ex(ctx.get(), md, &len);
+  std::string hex;
+  for (unsigned int i = 0; i < len; ++i) hex += fmt::format("{:02x}", md[i]);
+  return hex;
+}
+
+std::string utc_now_iso8601() {
+  const auto now = std::chrono::floor<std::chrono::seconds>(std::chrono::system_clock::now());
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", now);
+}
+
+namespace {
+
+// {file, sha256}; sha256 null when the file cannot be read (a scene parsed from text).
+nlohmann::json hashed(const std::string& file) {
+  try {
+    return {{"file", file}, {"sha256", sha256_file(file)}};
+  } catch (const std::runtime_error&) {
+    return {{"file", file}, {"sha256", nullptr}};
+  }
+}
+
+}  // namespace
+
+nlohmann::json provenance_json(const Scene& scene) {
+  std::vector<std::string> files;
+  for (const CreaseDef& c : scene.model.creases) {
+    if (!c.law) continue;
+    for (const std::string& f : c.law->data_files()) {
+      if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+    }
+  }
+  nlohmann::json data = nlohmann::json::array();
+  for (const std::string& f : files) data.push_back(hashed(f));
+  return {{"finseg_version", version()},
+          {"git_revision", git_revision()},
+          {"date_utc", utc_now_iso8601()},
+          {"scene", hashed(scene.file)},
+          {"data_files", data},
+          {"hash", "SHA-256 of the file's bytes (OpenSSL libcrypto)"}};
+}
+
+}  // namespace finseg
