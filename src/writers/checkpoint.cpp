@@ -66,31 +66,76 @@ PairSample pair_from(const json& v, const std::string& file, const std::string& 
   return s;
 }
 
-json frame_json(const Frame& f) {
-  json p = json::array(), r = json::array(), c = json::array();
-  for (const Vec3& x : f.p_W) p.push_back({x.x(), x.y(), x.z()});
-  for (const Mat3& m : f.R_WB)
-    r.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
-  for (const Vec3& x : f.contact_points_W) c.push_back({x.x(), x.y(), x.z()});
-  return {{"t", f.t}, {"p_W_m", p}, {"R_WB", r}, {"contact_points_W_m", c}};
+json vec3s_json(const std::vector<Vec3>& v) {
+  json out = json::array();
+  for (const Vec3& x : v) out.push_back({x.x(), x.y(), x.z()});
+  return out;
 }
 
+std::vector<Vec3> vec3s_from(const json& v, const std::string& file, const std::string& field) {
+  if (!v.is_array()) throw InputError(file, field, "expected an array");
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out.push_back(vec3(v[i], file, fmt::format("{}[{}]", field, i)));
+  return out;
+}
+
+// Per-segment loads and per-contact-point arrays, by their names in the checkpoint.
+// FrameT is Frame or const Frame.
+template <class FrameT, class Visit>
+void frame_arrays(FrameT& f, Visit&& visit) {
+  auto& s = f.segments;
+  visit("segment_element_force_N", s.element_force);
+  visit("segment_element_moment_Nm", s.element_moment);
+  visit("segment_crease_opening_rad", s.crease_opening);
+  visit("segment_crease_moment_Nm", s.crease_moment);
+  visit("segment_contact_normal_N", s.contact_normal);
+  visit("segment_contact_friction_N", s.contact_friction);
+  visit("contact_normal_N", f.contact_normal);
+  visit("contact_penetration_m", f.contact_penetration);
+  visit("contact_friction_N", f.contact_friction);
+}
+
+template <class FrameT, class Visit>
+void frame_vectors(FrameT& f, Visit&& visit) {
+  visit("p_W_m", f.p_W);
+  visit("contact_points_W_m", f.contact_points_W);
+  visit("v_W_m_s", f.v_W);
+  visit("w_W_rad_s", f.w_W);
+  visit("segment_force_W_N", f.segments.force_W);
+  visit("segment_moment_W_Nm", f.segments.moment_W);
+}
+
+json frame_json(const Frame& f) {
+  json j = {{"t", f.t}};
+  json r = json::array();
+  for (const Mat3& m : f.R_WB)
+    r.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
+  j["R_WB"] = r;
+  frame_vectors(f, [&](const char* key, const std::vector<Vec3>& v) { j[key] = vec3s_json(v); });
+  frame_arrays(f, [&](const char* key, const std::vector<double>& v) { j[key] = v; });
+  return j;
+}
+
+// Arrays added after the first checkpoints may be absent: they are then left empty.
 Frame frame_from(const json& v, const std::string& file, const std::string& field) {
   Frame f;
   f.t = value(member(v, "t", file, field), file, field + ".t");
-  const json& p = member(v, "p_W_m", file, field);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    f.p_W.push_back(vec3(p[i], file, fmt::format("{}.p_W_m[{}]", field, i)));
   const json& r = member(v, "R_WB", file, field);
   for (std::size_t i = 0; i < r.size(); ++i) {
     const std::vector<double> x = numbers(r[i], file, fmt::format("{}.R_WB[{}]", field, i));
     if (x.size() != 9) throw InputError(file, fmt::format("{}.R_WB[{}]", field, i), "expected 9");
     f.R_WB.push_back(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(x.data()));
   }
-  const json& c = member(v, "contact_points_W_m", file, field);
-  for (std::size_t i = 0; i < c.size(); ++i)
-    f.contact_points_W.push_back(
-        vec3(c[i], file, fmt::format("{}.contact_points_W_m[{}]", field, i)));
+  f.p_W = vec3s_from(member(v, "p_W_m", file, field), file, field + ".p_W_m");
+  f.contact_points_W =
+      vec3s_from(member(v, "contact_points_W_m", file, field), file, field + ".contact_points_W_m");
+  frame_vectors(f, [&](const char* key, std::vector<Vec3>& out) {
+    if (v.contains(key)) out = vec3s_from(v[key], file, field + "." + key);
+  });
+  frame_arrays(f, [&](const char* key, std::vector<double>& out) {
+    if (v.contains(key)) out = numbers(v[key], file, field + "." + key);
+  });
   return f;
 }
 
