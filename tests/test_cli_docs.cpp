@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -17,14 +16,24 @@ namespace {
 TEST(CliDocs, ReadmeCommandsWriteNoTrackedExampleFile) {
   // Former defect: the README's cantilever example wrote examples/cantilever/alpha2.yaml.
   const std::string readme = slurp(std::string(FINSEG_SOURCE_DIR) + "/README.md");
-  const std::regex out_into_examples(R"(--out\s+examples/)");
+  // "--out examples/...": split into words (std::regex trips GCC 12's -Wmaybe-uninitialized
+  // under the sanitizers).
+  const auto writes_into_examples = [](const std::string& line) {
+    std::istringstream words(line);
+    std::string word, previous;
+    while (words >> word) {
+      if (previous == "--out" && word.rfind("examples/", 0) == 0) return true;
+      previous = word;
+    }
+    return false;
+  };
   std::istringstream lines(readme);
   std::string line;
   int commands = 0;
   while (std::getline(lines, line)) {
     if (line.find("finseg ") == std::string::npos) continue;
     ++commands;
-    EXPECT_FALSE(std::regex_search(line, out_into_examples)) << line;
+    EXPECT_FALSE(writes_into_examples(line)) << line;
   }
   EXPECT_GT(commands, 3);
 }
