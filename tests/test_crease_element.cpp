@@ -11,6 +11,7 @@
 #include "elements/crease_history.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/measured.hpp"
+#include "jacobian_test_util.hpp"
 #include "solvers/dofs.hpp"
 
 namespace finseg {
@@ -125,15 +126,7 @@ TEST(CreaseElement, JacobianMatchesFiniteDifferences) {
   const Eigen::MatrixXd Jq = jac.dq;
   const double h = 1e-7;
   for (int c = 0; c < m.num_dofs; ++c) {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(m.num_dofs);
-    e[c] = h;
-    State a = st, b = st;
-    apply_pose_increment(m, a, e);
-    apply_pose_increment(m, b, -e);
-    BodyForces fa, fb;
-    compute_forces(m, a, fa);
-    compute_forces(m, b, fb);
-    const Eigen::VectorXd fd = (generalized_forces(m, fa) - generalized_forces(m, fb)) / (2 * h);
+    const Eigen::VectorXd fd = test::fd_pose_column(m, st, c, h);
     EXPECT_LE((fd - Jq.col(c)).norm(), 1e-5 * (1 + Jq.col(c).norm())) << "column " << c;
   }
 }

@@ -3,6 +3,7 @@
 
 #include "elements/assemble.hpp"
 #include "generators/sheet.hpp"
+#include "jacobian_test_util.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/solver.hpp"
 
@@ -64,22 +65,9 @@ TEST(EngineBasic, JacobianMatchesFiniteDifferences) {
   const Eigen::MatrixXd Jq = jac.dq, Jv = jac.dv;
   const double h = 1e-7;
   for (int c = 0; c < m.num_dofs; ++c) {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(m.num_dofs);
-    e[c] = h;
-    State a = st, b = st;
-    apply_pose_increment(m, a, e);
-    apply_pose_increment(m, b, -e);
-    BodyForces fa, fb;
-    compute_forces(m, a, fa);
-    compute_forces(m, b, fb);
-    const Eigen::VectorXd fd = (generalized_forces(m, fa) - generalized_forces(m, fb)) / (2 * h);
+    const Eigen::VectorXd fd = test::fd_pose_column(m, st, c, h);
     EXPECT_LE((fd - Jq.col(c)).norm(), 1e-5 * (1 + Jq.col(c).norm())) << "column " << c;
-    State va = st, vb = st;
-    set_velocity(m, va, v + e);
-    set_velocity(m, vb, v - e);
-    compute_forces(m, va, fa);
-    compute_forces(m, vb, fb);
-    const Eigen::VectorXd fdv = (generalized_forces(m, fa) - generalized_forces(m, fb)) / (2 * h);
+    const Eigen::VectorXd fdv = test::fd_velocity_column(m, st, v, c, h);
     EXPECT_LE((fdv - Jv.col(c)).norm(), 1e-5 * (1 + Jv.col(c).norm())) << "column " << c;
   }
 }

@@ -9,6 +9,7 @@
 #include "core/so3.hpp"
 #include "elements/assemble.hpp"
 #include "elements/pressure.hpp"
+#include "jacobian_test_util.hpp"
 #include "pressure_test_util.hpp"
 #include "scene/scene_reader.hpp"
 #include "solvers/dofs.hpp"
@@ -101,13 +102,7 @@ TEST(Pressure, JacobianMatchesFiniteDifferencesAndIsUnsymmetric) {
   const Eigen::MatrixXd J = jac.dq;
   const double h = 1e-6;
   for (int c = 0; c < m.num_dofs; ++c) {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(m.num_dofs);
-    e[c] = h;
-    State a = st, b = st;
-    apply_pose_increment(m, a, e);
-    apply_pose_increment(m, b, -e);
-    const Eigen::VectorXd fd =
-        (generalized_forces(m, forces_at(m, a)) - generalized_forces(m, forces_at(m, b))) / (2 * h);
+    const Eigen::VectorXd fd = test::fd_pose_column(m, st, c, h);
     EXPECT_LE((fd - J.col(c)).norm(), 1e-6 * J.norm()) << "column " << c;
   }
   // d force / d rotation is p A [n]x-like, d moment / d position is zero: unsymmetric.
