@@ -56,12 +56,12 @@ TEST(Provenance, VersionFlagPrintsVersionAndRevision) {
   EXPECT_FALSE(version().empty());
 }
 
-TEST(Provenance, SummaryRecordsHashesDateWarningsAndNewProbes) {
-  const TempDir dir;
+// A two-panel sheet folded 170 deg with the example crease table (copied into `dir`); its
+// opening angle 10 deg is below the data's 30 deg, so the law warns.
+std::string folded_sheet_scene(const TempDir& dir, const std::string& solver) {
   std::filesystem::copy_file(std::string(FINSEG_SOURCE_DIR) + "/examples/creases/creases.csv",
                              dir / "creases.csv");
-  // Folded 170 deg: opening angle 10 deg, below the data's 30 deg, so the law warns.
-  const std::string scene = R"(material: {youngs_modulus: 3e9, density: 800}
+  return R"(material: {youngs_modulus: 3e9, density: 800}
 sheet:
   length: 0.1
   width: 0.02
@@ -72,9 +72,13 @@ fixtures: {panels: [1]}
 probes:
   - {name: fold, type: crease, crease: 1}
   - {name: tip, type: pose, body: seg_r0_s3}
-solver: {type: static}
-)";
-  spit(dir / "s.yaml", scene);
+solver: )" +
+         solver + "\n";
+}
+
+TEST(Provenance, SummaryRecordsHashesDateWarningsAndNewProbes) {
+  const TempDir dir;
+  spit(dir / "s.yaml", folded_sheet_scene(dir, "{type: static}"));
   const auto r = run_finseg(dir, "run s.yaml --out out --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(dir / "out/summary.json"));
@@ -97,6 +101,18 @@ solver: {type: static}
   EXPECT_EQ(j.at("probes").at("tip").at("type"), "pose");
   const std::string csv = slurp(dir / "out/fold.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "load_scale,fold_angle_deg,opening_angle_deg,moment_Nm");
+}
+
+// The checkpoint's scene hash covers the crease table: editing the table refuses --resume.
+TEST(Provenance, ResumeRefusesACheckpointWhoseCreaseTableChanged) {
+  const TempDir dir;
+  spit(dir / "s.yaml", folded_sheet_scene(dir, "{type: explicit, t_end: 2e-3, dt: 1e-5}"));
+  ASSERT_EQ(run_finseg(dir, "run s.yaml --out out --quiet").code, 0);
+  EXPECT_EQ(run_finseg(dir, "run s.yaml --out out --quiet --resume").code, 0);
+  spit(dir / "creases.csv", slurp(dir / "creases.csv") + "\n");
+  const auto r = run_finseg(dir, "run s.yaml --out out --quiet --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("crease data changed"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "writers/atomic_write.hpp"
 #include "writers/checkpoint.hpp"
 #include "writers/output_folder.hpp"
+#include "writers/provenance.hpp"
 #include "writers/run_outputs.hpp"
 
 namespace finseg::cli {
@@ -100,8 +101,8 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
     StateSnapshot snap = read_checkpoint(path, scene.model, rec);
     if (snap.scene_hash != hash) {
       throw InputError(path, "scene_hash",
-                       "the checkpoint was made from another scene (or the scene file changed "
-                       "since): run without --resume");
+                       "the checkpoint was made from another scene (or the scene file or its "
+                       "crease data changed since): run without --resume");
     }
     return snap.state;
   }
@@ -155,7 +156,10 @@ class Checkpointer {
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
   const Scene scene = read_scene(o.scene);
-  const std::string hash = scene_hash(read_whole_file(o.scene));
+  // The checkpoint's hash covers the crease data too: a resume after a table changed is refused.
+  std::string inputs = read_whole_file(o.scene);
+  for (const std::string& f : scene_data_files(scene)) inputs += read_whole_file(f);
+  const std::string hash = scene_hash(inputs);
   check_output_folder(o.out, scene);
   RecorderOptions ro;
   ro.frames = scene.outputs.vtk || scene.outputs.html;

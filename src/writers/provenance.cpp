@@ -56,7 +56,7 @@ nlohmann::json hashed(const std::string& file) {
 
 }  // namespace
 
-nlohmann::json provenance_json(const Scene& scene) {
+std::vector<std::string> scene_data_files(const Scene& scene) {
   std::vector<std::string> files;
   for (const CreaseDef& c : scene.model.creases) {
     if (!c.law) continue;
@@ -64,8 +64,12 @@ nlohmann::json provenance_json(const Scene& scene) {
       if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
     }
   }
+  return files;
+}
+
+nlohmann::json provenance_json(const Scene& scene) {
   nlohmann::json data = nlohmann::json::array();
-  for (const std::string& f : files) data.push_back(hashed(f));
+  for (const std::string& f : scene_data_files(scene)) data.push_back(hashed(f));
   return {{"finseg_version", version()},
           {"git_revision", git_revision()},
           {"date_utc", utc_now_iso8601()},
