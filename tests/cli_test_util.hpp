@@ -67,10 +67,13 @@ struct CliResult {
 };
 
 /// Runs `finseg ARGS` in `dir` (stdout and stderr captured to files there).
-inline CliResult run_finseg(const TempDir& dir, const std::string& args) {
+/// Runs `finseg ARGS` in `dir`; `launcher` is shell text put before the program (e.g. a
+/// `ulimit` and `exec`, or `setpriv ...`).
+inline CliResult run_finseg(const TempDir& dir, const std::string& args,
+                            const std::string& launcher = "") {
   const std::string out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = "cd '" + dir.path().string() + "' && '" + FINSEG_BINARY + "' " + args +
-                          " > '" + out + "' 2> '" + err + "'";
+  const std::string cmd = "cd '" + dir.path().string() + "' && " + launcher + "'" + FINSEG_BINARY +
+                          "' " + args + " > '" + out + "' 2> '" + err + "'";
   const int status = std::system(cmd.c_str());
   CliResult r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -215,9 +215,9 @@ TEST(CliRunSafety, StateFileOfAnotherModelIsRefused) {
 // Write-time failures are found before the simulation: each scene below would run for
 // minutes (t_end 1000 s, explicit) before writing anything.
 void expect_refused_up_front(const TempDir& dir, const std::string& args,
-                             const std::string& expected) {
+                             const std::string& expected, const std::string& launcher = "") {
   const auto start = std::chrono::steady_clock::now();
-  const auto r = run_finseg(dir, args);
+  const auto r = run_finseg(dir, args, launcher);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.code, 2) << r.err;
@@ -256,13 +256,38 @@ TEST(CliRunSafety, UncreatableOutIsRefusedBeforeTheRun) {
 }
 
 TEST(CliRunSafety, ReadOnlyOutIsRefusedBeforeTheRun) {
-  if (geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders; see UncreatableOut";
   TempDir dir;
   write_cantilever(dir, "explicit", 1000);
   fs::create_directories(dir / "ro");
   chmod((dir / "ro").c_str(), 0555);
-  expect_refused_up_front(dir, "run c.yaml --out ro", "cannot write files in this folder");
+  // Root ignores permission bits; without the capabilities that let it, it obeys them.
+  const std::string launcher =
+      geteuid() == 0 ? "setpriv --bounding-set=-dac_override,-dac_read_search,-fowner " : "";
+  expect_refused_up_front(dir, "run c.yaml --out ro", "cannot write files in this folder",
+                          launcher);
   chmod((dir / "ro").c_str(), 0755);
+}
+
+// A disk that fills during the writing (a file-size limit, SIGXFSZ ignored so that writes
+// fail with EFBIG as on a full disk): a clear error, non-zero exit, and no file that looks
+// complete: no summary.json, no result file cut short, no partial file left behind.
+TEST(CliRunSafety, FullDiskFailsClearlyAndLeavesNoFileThatLooksComplete) {
+  TempDir dir;
+  write_cantilever(dir, "explicit", 0.05);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");
+  const auto r =
+      run_finseg(dir, "run c.yaml --out out --quiet", "trap '' XFSZ; ulimit -f 4; exec ");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("disk full?"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out/summary.json"));
+  for (const auto& e : fs::recursive_directory_iterator(dir / "out")) {
+    const std::string name = e.path().filename().string();
+    EXPECT_EQ(name.find(".partial"), std::string::npos) << name;
+    // Whatever is there was written whole: the tip CSV has all its 51 rows or is absent.
+    if (name == "tip.csv") {
+      EXPECT_EQ(csv_numbers(slurp(e.path())).size(), 51u);
+    }
+  }
 }
 
 // A second run into the same folder removes the first run's files (and only those).
