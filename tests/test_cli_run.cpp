@@ -135,6 +135,11 @@ TEST(CliRun, ZigzagPullWritesDriveCurveAndAnimation) {
   for (const char* f : {"reaction.csv", "energy.csv", "phases.csv", "vtk/frames.pvd"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / (std::string("out/") + f))) << f;
   }
+  // The page's slider and chart both say mm and their numbers are mm (the slider said [m]).
+  const std::string page = slurp(dir / "out/animation.html");
+  EXPECT_NE(page.find(R"("timeLabel":"pull displacement [mm]")"), std::string::npos);
+  EXPECT_NE(page.find(R"("frames":{"t":[0,5,10,15,20,25,30])"), std::string::npos);
+  EXPECT_NE(page.find(R"("xLabel":"pull displacement [mm]")"), std::string::npos);
 }
 
 // A far too large explicit step: exit 3, status "diverged", the rows before the blow-up kept.

@@ -81,7 +81,7 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   const HtmlAnnotations notes{"RUN INTERRUPTED - not finished",
                               {{s.curve.x[10], s.curve.y[10], "deployment peak"}}};
   write_html_animation(page.string(), "Zigzag strip (browser test)", s.model, s.frames, s.curve,
-                       "time [s]", notes);
+                       FrameAxis{}, notes);
 
   int status = 0;
   const std::string dom =

@@ -104,7 +104,7 @@ TEST(HtmlAnimation, RefusesACurveThatDoesNotMatchTheFrames) {
   EXPECT_FALSE(fs::exists(path));
   // An empty curve is allowed: the page then shows the 3-D view only.
   write_html_animation(path.string(), "no curve", s.model, s.frames, Curve{},
-                       "drive displacement [m]");
+                       {"drive displacement [mm]", 1e3});
   EXPECT_TRUE(fs::exists(path));
 }
 
@@ -114,7 +114,7 @@ TEST(HtmlAnimation, UnfinishedRunShowsABannerAndPeaksAreMarked) {
   const writer_test::TempDir tmp("html_banner");
   const fs::path path = tmp / "warned.html";
   HtmlAnnotations notes{"RUN DIVERGED - not finished: <step> & more", {{2.5, 0.1, "peak 0.1 N"}}};
-  write_html_animation(path.string(), "t", s.model, s.frames, s.curve, "time [s]", notes);
+  write_html_animation(path.string(), "t", s.model, s.frames, s.curve, {}, notes);
   const std::string page = slurp(path);
   EXPECT_NE(page.find("<div id=\"runwarning\" role=\"alert\">RUN DIVERGED - not finished: "
                       "&lt;step&gt; &amp; more</div>"),
@@ -127,7 +127,6 @@ TEST(HtmlAnimation, UnfinishedRunShowsABannerAndPeaksAreMarked) {
   write_html_animation(path.string(), "t", s.model, s.frames, s.curve);
   EXPECT_NE(slurp(path).find("<div id=\"runwarning\" role=\"alert\"></div>"), std::string::npos);
   notes.marks[0].y = NAN;
-  EXPECT_THROW(
-      write_html_animation(path.string(), "t", s.model, s.frames, s.curve, "time [s]", notes),
-      InputError);
+  EXPECT_THROW(write_html_animation(path.string(), "t", s.model, s.frames, s.curve, {}, notes),
+               InputError);
 }

@@ -90,7 +90,7 @@ std::string json_string(const std::string& s) {
   return nlohmann::json(s).dump();
 }
 
-std::string data_json(const std::string& title, const std::string& time_label, const Model& model,
+std::string data_json(const std::string& title, const FrameAxis& axis, const Model& model,
                       const std::vector<Frame>& frames, const Curve& curve,
                       const std::vector<ChartMark>& marks) {
   const std::size_t n = model.bodies.size();
@@ -113,7 +113,7 @@ std::string data_json(const std::string& title, const std::string& time_label, c
   std::string j = "{\"title\":";
   j += json_string(title);
   j += ",\"timeLabel\":";
-  j += json_string(time_label);
+  j += json_string(axis.label);
   j += ",\"lengthUnit\":\"m\",\"bodies\":{\"size\":[";
   for (std::size_t b = 0; b < n; ++b) {
     for (int k = 0; k < 3; ++k) {
@@ -139,7 +139,7 @@ std::string data_json(const std::string& title, const std::string& time_label, c
   j += "]},\"frames\":{\"t\":[";
   for (std::size_t f = 0; f < frames.size(); ++f) {
     if (f) j += ',';
-    put_general(j, frames[f].t, 9);
+    put_general(j, axis.scale * frames[f].t, 9);
   }
   j += "],\"p\":[";
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -226,7 +226,7 @@ void check_curve(const Model& model, const std::vector<Frame>& frames, const Cur
 
 void write_html_animation(const std::string& path, const std::string& title, const Model& model,
                           const std::vector<Frame>& frames, const Curve& curve,
-                          const std::string& time_label, const HtmlAnnotations& notes) {
+                          const FrameAxis& axis, const HtmlAnnotations& notes) {
   if (frames.empty()) throw InputError(model.source, "frames", "at least one frame is needed");
   check_frames(model, frames);
   check_curve(model, frames, curve);
@@ -252,8 +252,7 @@ void write_html_animation(const std::string& path, const std::string& title, con
       throw InputError(model.source, "chart mark '" + m.label + "'", "must be finite");
     }
   }
-  const std::string data =
-      script_safe(data_json(title, time_label, model, frames, curve, notes.marks));
+  const std::string data = script_safe(data_json(title, axis, model, frames, curve, notes.marks));
   std::string page;
   page.reserve(tmpl.size() + libs.size() + data.size() + title.size());
   // Each placeholder is looked up in the template only, never in what was inserted.

@@ -24,16 +24,21 @@ struct HtmlAnnotations {
   std::vector<ChartMark> marks;
 };
 
+/// How the page shows Frame::t (the slider's abscissa): `label` with its unit in brackets and
+/// the factor from Frame::t to that unit, e.g. {"pull displacement [mm]", 1e3} for a
+/// quasi-static pull whose Frame::t is in m.
+struct FrameAxis {
+  std::string label = "time [s]";
+  double scale = 1;
+};
+
 /// Writes one HTML file (atomically) that needs no network and no other file. `curve` may
-/// be empty (no chart); otherwise it has one point per frame. `time_label` names what
-/// Frame::t is, with its unit in brackets: "time [s]", or e.g. "drive displacement [m]" for
-/// quasi-static runs. Throws InputError if frames or curve do not fit the model, and
-/// std::runtime_error naming the file and the Debian package if a JavaScript library is
-/// missing.
+/// be empty (no chart); otherwise it has one point per frame. Throws InputError if frames or curve
+/// do not fit the model, and std::runtime_error naming the file and the Debian package if a
+/// JavaScript library is missing.
 void write_html_animation(const std::string& path, const std::string& title, const Model& model,
                           const std::vector<Frame>& frames, const Curve& curve,
-                          const std::string& time_label = "time [s]",
-                          const HtmlAnnotations& notes = {});
+                          const FrameAxis& axis = {}, const HtmlAnnotations& notes = {});
 
 /// Where the inlined libraries are read from (Debian's libjs-three and libjs-chart.js).
 inline constexpr const char* kThreeJsPath = "/usr/share/javascript/three/three.min.js";

@@ -292,16 +292,18 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   }
   if (o.html && !rec.frames().empty()) {
     const Curve curve = first_drive ? drive_curve(*first_drive) : Curve{};
-    const std::string label = rec.abscissa() == "t_s"          ? "time [s]"
-                              : rec.abscissa() == "load_scale" ? "load scale [-]"
-                                                               : "pull displacement [m]";
+    // The slider shows a pull in mm, as the chart beside it.
+    const FrameAxis axis = rec.abscissa() == "t_s" ? FrameAxis{"time [s]", 1}
+                           : rec.abscissa() == "load_scale"
+                               ? FrameAxis{"load scale [-]", 1}
+                               : FrameAxis{"pull displacement [mm]", 1e3};
     optional_output(report, "animation.html", [&] {
       HtmlAnnotations notes{warning, {}};
       if (first_drive && curve.x.size() == rec.frames().size()) {
         notes.marks = peak_marks(probes[first_drive->name]);
       }
       write_html_animation((fs::path(dir) / "animation.html").string(), title, scene.model,
-                           rec.frames(), curve, label, notes);
+                           rec.frames(), curve, axis, notes);
     });
   }
   nlohmann::json j{{"scene", scene.file},
