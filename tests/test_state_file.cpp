@@ -40,7 +40,16 @@ State busy_state(const Model& m) {
                        {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false}};
   s.contact.p_W = s.p_W;
   s.contact.R_WB = s.R_WB;
-  s.solver = {1e-6 / 3, s.t + 0.01, 1.0 / 7, 123456789012, s.t, s.v_W, s.w_W};
+  s.solver = {1e-6 / 3,
+              s.t + 0.01,
+              1.0 / 7,
+              123456789012,
+              s.t,
+              s.v_W,
+              s.w_W,
+              {1.0 / 3, -2e-300, 7},
+              {std::sqrt(2.0), 0, -1.0 / 9},
+              1e-5 / 7};
   return s;
 }
 
@@ -87,6 +96,9 @@ TEST(StateFile, RoundTripIsExact) {
   EXPECT_EQ(q.solver.next_output, s.solver.next_output);
   EXPECT_EQ(q.solver.t_start, s.solver.t_start);
   EXPECT_EQ(q.solver.steps, s.solver.steps);
+  EXPECT_EQ(q.solver.vdot, s.solver.vdot);
+  EXPECT_EQ(q.solver.accel, s.solver.accel);
+  EXPECT_EQ(q.solver.h_prev, s.solver.h_prev);
 }
 
 // The message of the InputError that parsing `j` throws ("" if none).

@@ -25,6 +25,10 @@ struct SolverMemory {
   long steps = 0;                ///< explicit: steps taken since t_start
   double t = -1;                 ///< State::t when saved; ignored at any other time
   std::vector<Vec3> f_W, tau_W;  ///< explicit: forces the next step starts from, N, N m
+  /// Generalized-alpha: vdot_n and the algorithmic acceleration a_n per DOF (empty: begin
+  /// afresh), and the step h_n they belong to, s.
+  std::vector<double> vdot, accel;
+  double h_prev = 0;
 };
 
 struct State {

@@ -180,6 +180,22 @@ void read_solver(const Reader& in, const json& j, std::size_t bodies, State& s) 
   const std::size_t n = f.is_array() && f.empty() ? 0 : bodies;
   s.solver.f_W = in.vecs(f, "solver.f_W_N", n);
   s.solver.tau_W = in.vecs(in.key(m, "tau_W_N_m", "solver"), "solver.tau_W_N_m", n);
+  // Generalized-alpha's memory; absent in files written before it was kept.
+  if (m.contains("vdot")) {
+    const auto numbers = [&](const std::string& k) {
+      const json& a = in.key(m, k, "solver");
+      if (!a.is_array()) in.fail("solver." + k, "expected an array");
+      std::vector<double> out;
+      for (const json& x : a) out.push_back(in.number(x, "solver." + k));
+      return out;
+    };
+    s.solver.vdot = numbers("vdot");
+    s.solver.accel = numbers("accel");
+    if (s.solver.vdot.size() != s.solver.accel.size()) {
+      in.fail("solver.accel", "expected as many entries as solver.vdot");
+    }
+    s.solver.h_prev = in.number(in.key(m, "h_prev_s", "solver"), "solver.h_prev_s");
+  }
 }
 
 }  // namespace
@@ -228,7 +244,10 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
             {"t_start", s.solver.t_start},
             {"steps", s.solver.steps},
             {"f_W_N", vecs_json(s.solver.f_W)},
-            {"tau_W_N_m", vecs_json(s.solver.tau_W)}}}};
+            {"tau_W_N_m", vecs_json(s.solver.tau_W)},
+            {"vdot", s.solver.vdot},
+            {"accel", s.solver.accel},
+            {"h_prev_s", s.solver.h_prev}}}};
 }
 
 StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,

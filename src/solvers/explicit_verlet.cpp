@@ -52,7 +52,7 @@ double automatic_step(const Model& model, const State& state) {
 
 // Saves what the next step needs (a run continued from a checkpoint of this state).
 void remember(State& state, const BodyForces& f, double h, double next_output, double t0, long n) {
-  state.solver = {h, next_output, t0, n, state.t, f.f_W, f.tau_W};
+  state.solver = {h, next_output, t0, n, state.t, f.f_W, f.tau_W, {}, {}, 0};
 }
 
 // Between outputs the memory is stale; empty, it costs nothing in the per-step State copies.

@@ -29,6 +29,14 @@ class GeneralizedAlpha final : public TimeStepper {
 
   // vdot_0 = M^-1 (g - gyro); the pseudo-acceleration starts equal to it.
   void begin(const Model& model, const State& state, const BodyForces& f) override {
+    const SolverMemory& m = state.solver;
+    const auto n = static_cast<std::size_t>(model.num_dofs);
+    if (m.t == state.t && m.vdot.size() == n && m.accel.size() == n) {
+      vdot_ = Eigen::Map<const Eigen::VectorXd>(m.vdot.data(), model.num_dofs);
+      a_ = Eigen::Map<const Eigen::VectorXd>(m.accel.data(), model.num_dofs);
+      h_ = m.h_prev;
+      return;
+    }
     const Eigen::VectorXd rhs = generalized_forces(model, f) - gyroscopic_forces(model, state);
     if (!sparse_solve(mass_matrix(model, state), rhs, vdot_)) vdot_.setZero(model.num_dofs);
     a_ = vdot_;
@@ -67,6 +75,12 @@ class GeneralizedAlpha final : public TimeStepper {
     vdot_ = next_vdot_;
     a_ = restart ? next_vdot_ : next_a_;
     h_ = next_h_;
+  }
+
+  void remember(SolverMemory& memory) const override {
+    memory.vdot.assign(vdot_.data(), vdot_.data() + vdot_.size());
+    memory.accel.assign(a_.data(), a_.data() + a_.size());
+    memory.h_prev = h_;
   }
 
   double error_order() const override { return 3; }

@@ -35,6 +35,7 @@ class BackwardEuler final : public TimeStepper {
     return r;
   }
 
+  void remember(SolverMemory&) const override {}  // no history beyond the state
   void accept(bool) override {}
   double error_order() const override { return 2; }
 

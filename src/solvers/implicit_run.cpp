@@ -59,7 +59,17 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
   const double t0 = state.t;
   double next_output = resumed ? state.solver.next_output : t0 + every;
-  state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+  // What a checkpoint at this output needs to continue exactly as this run does.
+  const auto memory = [&] {
+    SolverMemory m;
+    m.dt = h;
+    m.next_output = next_output;
+    m.t_start = t0;
+    m.t = state.t;
+    stepper->remember(m);
+    return m;
+  };
+  state.solver = memory();
   on_output(state, f);
   stats.smallest_step = h;
   bool after_rejection = false;
@@ -96,7 +106,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
     if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
       next_output += every;
-      state.solver = {h, next_output, t0, 0, state.t, {}, {}};
+      state.solver = memory();
       on_output(state, f);
       on_progress((state.t - t0) / (settings.t_end - t0));
     }

@@ -18,8 +18,11 @@ struct StepTry {
 class TimeStepper {
  public:
   virtual ~TimeStepper() = default;
-  /// Starts the history from `state` and its forces `f` (t = 0 and after a restart).
+  /// Starts the history from `state` and its forces `f` (t = 0 and after a restart), or from
+  /// state.solver where it holds this scheme's memory at state.t (a resumed run).
   virtual void begin(const Model& model, const State& state, const BodyForces& f) = 0;
+  /// Writes the history into `memory`, so that a run resumed from it continues exactly.
+  virtual void remember(SolverMemory& memory) const = 0;
   /// Advances `start` by h into `state` (forces in `f`); touches no history.
   virtual StepTry attempt(const Model& model, const State& start, double h, State& state,
                           BodyForces& f, SolverStats& stats) = 0;
