@@ -104,10 +104,13 @@ TEST(ZigzagConditions, StaticPullMatchesSlowDynamicPull) {
   const PullResult quasi_static = run_pull_test(m, {1, 4}, 0.1);
   const PullResult slow = slow_dynamic_pull(m);
   ASSERT_EQ(quasi_static.stats.status, "ok") << quasi_static.stats.message;
-  EXPECT_GT(quasi_static.peak_displacement, 0.01);  // past the start, where contact begins
-  EXPECT_LT(quasi_static.peak_displacement, 0.035);
-  EXPECT_NEAR(slow.peak_displacement, quasi_static.peak_displacement, 1e-9);
-  EXPECT_NEAR(slow.peak_force, quasi_static.peak_force, 0.01 * quasi_static.peak_force);
+  const DeploymentPeak& qs = quasi_static.deployment_peak;
+  const DeploymentPeak& dyn = slow.deployment_peak;
+  ASSERT_TRUE(qs.found && dyn.found);
+  EXPECT_GT(qs.x, 0.01);  // past the start, where contact begins
+  EXPECT_LT(qs.x, 0.035);
+  EXPECT_NEAR(dyn.x, qs.x, 1e-9);
+  EXPECT_NEAR(dyn.force, qs.force, 0.01 * qs.force);
 }
 
 // Mesh convergence with contact (the criterion): doubling the segments per panel from
@@ -117,10 +120,11 @@ TEST(ZigzagConditions, StaticPullMatchesSlowDynamicPull) {
 TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithContact) {
   const PullResult coarse = slow_dynamic_pull(build_zigzag_model(condition_two_first_40mm(16, 8)));
   const PullResult fine = slow_dynamic_pull(build_zigzag_model(condition_two_first_40mm(32, 8)));
-  EXPECT_GT(fine.peak_displacement, 0.01);
-  EXPECT_LT(fine.peak_displacement, 0.035);
-  EXPECT_LT(std::abs(coarse.peak_force - fine.peak_force) / fine.peak_force, 0.02)
-      << coarse.peak_force << " vs " << fine.peak_force << " N";
+  const DeploymentPeak &c = coarse.deployment_peak, &f = fine.deployment_peak;
+  ASSERT_TRUE(c.found && f.found);
+  EXPECT_GT(f.x, 0.01);
+  EXPECT_LT(f.x, 0.035);
+  EXPECT_LT(std::abs(c.force - f.force) / f.force, 0.02) << c.force << " vs " << f.force << " N";
   EXPECT_GT(fine.max_penetration, 0);
   EXPECT_LT(fine.max_penetration, 0.5 * paper_condition(2).thickness);
 }
@@ -128,7 +132,9 @@ TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithContact) {
 // Mesh convergence of the discretisation without contact (the panels then pass through each
 // other, so this is the beam/crease discretisation alone): doubling the segments per panel
 // from 16 to 32 (cells refined 8:1 towards the creases) changes the peak pull force of
-// condition 1 by less than 2 %.
+// condition 1 by less than 2 %. Without contact the force rises over the whole travel (no
+// deployment hump: the hump comes from the panels pressing on each other), so the measure
+// here is the largest force, at the taut end.
 TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithoutContact) {
   auto peak = [](int segments) {
     ZigzagSpec spec = paper_condition(1);
