@@ -343,5 +343,32 @@ TEST(CliRunSafety, StaticLoadSteppingReportsProgress) {
   EXPECT_NE(r.err.find("finseg: [100.0%] load 1"), std::string::npos) << r.err;
 }
 
+// Progress also where the run is not stepping: the static equilibrium and the eigen solve of
+// `finseg modes`, and the writing of the VTK frames.
+TEST(CliRunSafety, ModesAndOutputWritingReportProgress) {
+  TempDir dir;
+  write_cantilever(dir, "static", 1);
+  replace_line(dir / "c.yaml", "load_steps: 1", "load_steps: 4");
+  auto r = run_finseg(dir, "modes c.yaml --count 2 --progress-every 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("finseg: [100.0%] static equilibrium, load 1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("finseg: eigen solve: 2 modes of 48 degrees of freedom"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("finseg: eigen solve done in"), std::string::npos) << r.err;
+  r = run_finseg(dir, "modes c.yaml --count 2 --quiet");
+  EXPECT_EQ(r.err, "");
+  write_cantilever(dir, "explicit", 0.02);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");
+  r = run_finseg(dir, "run c.yaml --out out --progress-every 0");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::size_t lines = 0;  // one a frame with --progress-every 0
+  for (auto at = r.err.find("writing 21 VTK frames to out"); at != std::string::npos;
+       at = r.err.find("writing 21 VTK frames to out", at + 1)) {
+    ++lines;
+  }
+  EXPECT_EQ(lines, 21u) << r.err;
+  EXPECT_NE(r.err.find("finseg: [100.0%] writing 21 VTK frames to out"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace finseg

@@ -199,7 +199,13 @@ void run_scene(const RunOptions& o) {
                                 g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec));
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  RunReport report = write_run_outputs(o.out, scene, rec, stats, wall);
+  const std::size_t frames = rec.frames().size();
+  ProgressLine writing(
+      progress_mode(o.quiet || !scene.outputs.vtk),
+      [&] { return fmt::format("writing {} VTK frames to {}", frames, o.out); }, o.progress_every);
+  RunReport report = write_run_outputs(o.out, scene, rec, stats, wall,
+                                       [&](double fraction) { writing.update(fraction); });
+  writing.finish();
   if (fs::exists(fs::path(o.out) / kCheckpointFile)) report.files.push_back(kCheckpointFile);
   write_manifest(o.out, report.files);
   for (const std::string& w : report.warnings) fmt::print(stderr, "finseg: warning: {}\n", w);

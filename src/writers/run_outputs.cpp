@@ -242,7 +242,8 @@ nlohmann::json probe_summary(const ProbeTable& t, double deployed_at) {
 }
 
 RunReport write_run_outputs(const std::string& dir, const Scene& scene, const RunRecorder& rec,
-                            const SolverStats& stats, double wall_seconds) {
+                            const SolverStats& stats, double wall_seconds,
+                            const std::function<void(double)>& on_progress) {
   fs::create_directories(dir);
   RunReport report;
   nlohmann::json probes = nlohmann::json::object();
@@ -287,7 +288,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   }
   if (o.vtk && !rec.frames().empty()) {
     optional_output(report, "vtk/frames.pvd", [&] {
-      write_vtk_series((fs::path(dir) / "vtk").string(), "frames", scene.model, rec.frames());
+      write_vtk_series((fs::path(dir) / "vtk").string(), "frames", scene.model, rec.frames(),
+                       on_progress);
     });
   }
   if (o.html && !rec.frames().empty()) {

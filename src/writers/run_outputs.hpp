@@ -3,6 +3,7 @@
 // page and force plots, and summary.json, written last. Every file is written atomically.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,10 @@ struct RunReport {
 };
 
 /// Writes the run's files into `dir` (created if needed); summary.json is written last.
-/// `wall_seconds` is the whole run's wall time.
+/// `wall_seconds` is the whole run's wall time; `on_progress` gets the fraction of the VTK
+/// frames written (the long part of large outputs).
 RunReport write_run_outputs(const std::string& dir, const Scene& scene, const RunRecorder& rec,
-                            const SolverStats& stats, double wall_seconds);
+                            const SolverStats& stats, double wall_seconds,
+                            const std::function<void(double)>& on_progress = {});
 
 }  // namespace finseg

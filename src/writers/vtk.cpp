@@ -172,7 +172,8 @@ void check_optional_sizes(const Model& model, const std::vector<Frame>& frames) 
 }  // namespace
 
 void write_vtk_series(const std::string& dir, const std::string& stem, const Model& model,
-                      const std::vector<Frame>& frames) {
+                      const std::vector<Frame>& frames,
+                      const std::function<void(double)>& on_progress) {
   check_frames(model, frames);
   check_optional_sizes(model, frames);
   namespace fs = std::filesystem;
@@ -194,6 +195,7 @@ void write_vtk_series(const std::string& dir, const std::string& stem, const Mod
       write_file_atomically((base / cname).string(), contacts_vtu(frames[f]));
       contact_files.push_back(cname);
     }
+    if (on_progress) on_progress(static_cast<double>(f + 1) / static_cast<double>(frames.size()));
   }
   // The collections last: they only ever list files that are complete on disk.
   if (any_contacts) {

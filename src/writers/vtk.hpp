@@ -3,6 +3,7 @@
 // binary, zlib-compressed and appended (docs/vtk.md lists them with their units).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace finseg {
 /// Frame::t. Files are written atomically (temporary name, then rename). Throws InputError
 /// if a frame does not match the model.
 void write_vtk_series(const std::string& dir, const std::string& stem, const Model& model,
-                      const std::vector<Frame>& frames);
+                      const std::vector<Frame>& frames,
+                      const std::function<void(double)>& on_progress = {});
 
 /// One vibration mode: frequency and, per body, the translation and small rotation (world
 /// frame) of the shape, scaled so that the largest box-corner displacement is 1.
