@@ -91,10 +91,13 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
   if (o.resume && !o.state_file.empty())
     throw InputError("<cli>", "--resume", "continues DIR's own checkpoint: leave out --state");
   if (o.resume) {
-    if (scene.solver.kind == SolverKind::Static) {
+    const Model& m = scene.model;
+    const bool drive_path = !m.drives.empty() && m.drives[0].travel > 0 && m.drives[0].step > 0;
+    if (scene.solver.kind == SolverKind::Static && !drive_path) {
       throw InputError("<cli>", "--resume",
-                       "static solver runs cannot be resumed (the load path restarts from zero); "
-                       "use --state DIR/checkpoint.json to start from its poses and history");
+                       "a static run without a drive path has no output between its start and "
+                       "its end to continue from: run it again (or use --state "
+                       "DIR/checkpoint.json to start from its poses and history)");
     }
     const std::string path = (fs::path(o.out) / kCheckpointFile).string();
     if (!fs::exists(path)) throw InputError(path, "--resume", "no checkpoint to resume from");
@@ -228,7 +231,8 @@ void register_run(CLI::App& app) {
   run->add_option("--out", o->out, "output folder (created if needed)")->required();
   run->add_flag("--quiet", o->quiet, "no progress display and no result lines");
   run->add_flag("--resume", o->resume,
-                "continue the run whose checkpoint is in --out (same scene; dynamic solvers)");
+                "continue the run whose checkpoint is in --out (same scene; dynamic solvers and "
+                "static drive paths)");
   run->add_option("--state", o->state_file,
                   "start from this state file instead of the scene's initial state "
                   "(docs/state-file.md)");

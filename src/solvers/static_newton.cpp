@@ -297,6 +297,54 @@ void continuation(const Model& model, State& state, const SolverSettings& settin
   }
 }
 
+// Memory of a drive path at an output: the path steps done and the continuation increment
+// the next one starts with, so that a resumed run continues exactly (docs/state-file.md).
+SolverMemory path_memory(const State& state, long steps_done, double ds) {
+  SolverMemory m;
+  m.dt = ds;
+  m.steps = steps_done;
+  m.t = state.t;
+  return m;
+}
+
+// A drive path resumed from a checkpoint: its memory belongs to this state.
+bool resumes_path(const State& state) {
+  return state.solver.t == state.t && state.solver.dt > 0 && state.solver.steps >= 0;
+}
+
+// Quasi-static pull from path step `done` on: one equilibrium per drive step; t records the
+// drive displacement. Along the pull Newton converges in a handful of iterations where it
+// converges at all: a step that needs more, or stalls, is cut (cheaper than iterating on, and
+// the cut steps converge fast). Long Newton runs also wander onto other branches than the
+// slow pull's (docs/zigzag.md, "Status").
+void drive_path(const Model& model, State& state, const SolverSettings& settings, double fscale,
+                long done, double ds, const OutputCallback& on_output,
+                const ProgressCallback& on_progress, BodyForces& f, SolverStats& stats) {
+  const DriveDef& d0 = model.drives[0];
+  const long n = solver_step_count(d0.travel, d0.step, "static solver (drive path)");
+  SolverSettings path_settings = settings;
+  path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
+  for (long k = done + 1; k <= n; ++k) {
+    const double s_from = state.drive_s[0];
+    const double s_to = std::min(d0.travel, k * d0.step);
+    continuation(
+        model, state, path_settings, fscale, s_from, s_to, ds,
+        [&](State& s, double x) {
+          for (size_t i = 0; i < model.drives.size(); ++i) {
+            const DriveDef& d = model.drives[i];
+            s.drive_s[i] = std::min(d.travel, x * (d.step / d0.step));
+          }
+          s.t = x;
+        },
+        "drive displacement", f, stats, true, kPathStallIteration);
+    commit_history(model, state);
+    ++stats.steps;
+    state.solver = path_memory(state, k, ds);
+    on_output(state, f);
+    on_progress(static_cast<double>(k) / n);
+  }
+}
+
 }  // namespace
 
 void run_static(const Model& model, State& state, const SolverSettings& settings,
@@ -307,6 +355,13 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   for (Vec3& w : state.w_W) w.setZero();
   BodyForces f;
   const bool path = !model.drives.empty() && model.drives[0].travel > 0 && model.drives[0].step > 0;
+  if (path && resumes_path(state)) {
+    compute_forces(model, state, f);
+    on_output(state, f);  // the checkpoint's output (a resumed run does not record it again)
+    drive_path(model, state, settings, fscale, state.solver.steps, state.solver.dt, on_output,
+               on_progress, f, stats);
+    return;
+  }
   // Loads first, by load stepping from zero. The load steps' equilibria are the solver's
   // way to the loaded equilibrium of the initial state, not states the structure passes
   // through (started from zero load, a structure set up near its loaded equilibrium swings
@@ -333,36 +388,11 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
     on_progress(1.0);
     return;
   }
-  // Quasi-static pull: one equilibrium per drive step; t records the drive displacement.
-  const DriveDef& d0 = model.drives[0];
-  const long n = solver_step_count(d0.travel, d0.step, "static solver (drive path)");
   state.t = 0;
+  state.solver = path_memory(state, 0, model.drives[0].step);
   on_output(state, f);
-  // Along the pull Newton converges in a handful of iterations where it converges at all: a
-  // step that needs more, or stalls, is cut (cheaper than iterating on, and the cut steps
-  // converge fast). Long Newton runs also wander onto other branches than the slow pull's
-  // (docs/zigzag.md, "Status").
-  SolverSettings path_settings = settings;
-  path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
-  double ds = d0.step;
-  for (long k = 1; k <= n; ++k) {
-    const double s_from = state.drive_s[0];
-    const double s_to = std::min(d0.travel, k * d0.step);
-    continuation(
-        model, state, path_settings, fscale, s_from, s_to, ds,
-        [&](State& s, double x) {
-          for (size_t i = 0; i < model.drives.size(); ++i) {
-            const DriveDef& d = model.drives[i];
-            s.drive_s[i] = std::min(d.travel, x * (d.step / d0.step));
-          }
-          s.t = x;
-        },
-        "drive displacement", f, stats, true, kPathStallIteration);
-    commit_history(model, state);
-    ++stats.steps;
-    on_output(state, f);
-    on_progress(static_cast<double>(k) / n);
-  }
+  drive_path(model, state, settings, fscale, 0, model.drives[0].step, on_output, on_progress, f,
+             stats);
 }
 
 }  // namespace finseg
