@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "apps/finseg/commands.hpp"
 #include "apps/finseg/progress.hpp"
@@ -35,6 +36,7 @@ struct RunOptions {
   bool quiet = false, resume = false;
   double checkpoint_every = 30;  // wall seconds between checkpoints (0: every output)
   double progress_every = 5;     // wall seconds between progress lines off a terminal
+  std::vector<std::string> set;  // --set KEY.PATH=VALUE
 };
 
 volatile std::sig_atomic_t g_signal = 0;
@@ -158,10 +160,14 @@ class Checkpointer {
 
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
-  const Scene scene = read_scene(o.scene);
-  // The checkpoint's hash covers the crease data too: a resume after a table changed is refused.
+  std::vector<Override> overrides;
+  for (const std::string& s : o.set) overrides.push_back(parse_override(s));
+  const Scene scene = read_scene(o.scene, overrides);
+  // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
+  // table or an override changed is refused.
   std::string inputs = read_whole_file(o.scene);
   for (const std::string& f : scene_data_files(scene)) inputs += read_whole_file(f);
+  for (const Override& v : overrides) inputs += "\n--set " + v.path + "=" + v.value;
   const std::string hash = scene_hash(inputs);
   check_output_folder(o.out, scene);
   RecorderOptions ro;
@@ -240,6 +246,9 @@ void register_run(CLI::App& app) {
                   "wall seconds between checkpoints in DIR/checkpoint.json (0: every output)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  run->add_option("--set", o->set,
+                  "change the scene: KEY.PATH=VALUE (repeatable; lists by index from 0, e.g. "
+                  "drives.0.speed=0.02; docs/scene.md)");
   run->add_option("--progress-every", o->progress_every,
                   "wall seconds between progress lines when stderr is not a terminal")
       ->check(CLI::NonNegativeNumber)

@@ -28,11 +28,12 @@ std::string scene_field_of_model(const std::string& model_field, bool zigzag) {
   return model_field;  // loads[i], drives[i], gravity: named as in the scene
 }
 
-Scene read_scene(const std::string& path) {
-  return parse_scene(read_text_file(path), path);
+Scene read_scene(const std::string& path, const std::vector<Override>& overrides) {
+  return parse_scene(read_text_file(path), path, overrides);
 }
 
-Scene parse_scene(const std::string& yaml, const std::string& file) {
+Scene parse_scene(const std::string& yaml, const std::string& file,
+                  const std::vector<Override>& overrides) {
   YAML::Node root_node;
   try {
     root_node = YAML::Load(normalize_text(yaml));
@@ -42,12 +43,14 @@ Scene parse_scene(const std::string& yaml, const std::string& file) {
   }
   if (!root_node.IsMap()) throw InputError(file, "<top level>", "must be a map of sections");
   refuse_duplicate_keys(root_node, {file, ""});
+  apply_overrides(root_node, overrides, file);
   const Fields root(
       root_node, {file, ""},
       {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
        "drives", "probes", "contact", "zigzag", "solver", "outputs", "pressures"});
   Scene scene;
   scene.file = file;
+  scene.overrides = overrides;
   try {
     scene.title = root.word("title", "");
     scene.model = read_structure(root, scene.zigzag);

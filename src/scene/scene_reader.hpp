@@ -7,6 +7,7 @@
 
 #include "model/model.hpp"
 #include "probes/deployment_phases.hpp"
+#include "scene/overrides.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -35,14 +36,16 @@ struct Scene {
   Model model;
   SolverSettings solver;
   OutputSettings outputs;
+  std::vector<Override> overrides;  ///< `--set` changes applied on top of the file
 };
 
-/// Reads and validates a scene file (read once). Throws InputError naming the file, the
-/// dotted field and the allowed range.
-Scene read_scene(const std::string& path);
+/// Reads and validates a scene file (read once), with `overrides` (scene/overrides.hpp) set in
+/// its YAML first. Throws InputError naming the file, the dotted field and the allowed range.
+Scene read_scene(const std::string& path, const std::vector<Override>& overrides = {});
 
 /// Same from YAML text; `file` names it in messages and resolves relative data files.
-Scene parse_scene(const std::string& yaml, const std::string& file);
+Scene parse_scene(const std::string& yaml, const std::string& file,
+                  const std::vector<Override>& overrides = {});
 
 /// Name of a solver kind as written in scene files: static, implicit, explicit.
 std::string solver_name(SolverKind kind);

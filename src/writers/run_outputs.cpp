@@ -308,7 +308,10 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                            rec.frames(), curve, axis, notes);
     });
   }
+  nlohmann::json overrides = nlohmann::json::array();
+  for (const Override& o : scene.overrides) overrides.push_back(o.path + "=" + o.value);
   nlohmann::json j{{"scene", scene.file},
+                   {"overrides", overrides},
                    {"title", title},
                    {"status", stats.status},
                    {"message", stats.message},
