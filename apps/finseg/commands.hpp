@@ -19,5 +19,6 @@ void register_identify(CLI::App& app);  ///< finseg identify bending|crease DATA
 void register_compare(CLI::App& app);   ///< finseg compare SIM.csv EXP.csv...
 void register_pattern(CLI::App& app);   ///< finseg pattern check|info|zigzag ...
 void register_overlay(CLI::App& app);   ///< finseg overlay DIR... --out FILE
+void register_sweep(CLI::App& app);     ///< finseg sweep SWEEP.yaml --out DIR
 
 }  // namespace finseg::cli
