@@ -6,6 +6,7 @@
 
 #include "cli_test_util.hpp"
 #include "core/error.hpp"
+#include "sweep/sweep_plot.hpp"
 #include "sweep/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
 
@@ -120,6 +121,28 @@ TEST(Sweep, TableIsTheSameForAnyNumberOfJobsAndKeepsFailures) {
   EXPECT_NE(lines[3].find("sheet.thickness"), std::string::npos) << lines[3];
   EXPECT_NE(one.err.find("case_004 4/4 failed"), std::string::npos) << one.err;
   EXPECT_EQ(two.err, "");
+}
+
+// The plot: the first output against the first parameter, a line per value of the others,
+// only cases that ran to the end; none when no case has a number.
+TEST(Sweep, PlotHasALinePerCombinationOfTheOtherParameters) {
+  SweepSpec spec;
+  spec.parameters = {{"a", {"1", "2"}}, {"b", {"x", "y"}}};
+  spec.outputs = {"f"};
+  const auto cases = sweep_cases(spec);
+  std::vector<SweepCaseResult> results(4);
+  for (int i = 0; i < 4; ++i) results[i].summary = {{"status", "ok"}, {"f", 10.0 * i}};
+  results[3].summary["status"] = "diverged";
+  const auto plot = sweep_plot_spec(spec, cases, results);
+  ASSERT_TRUE(plot.has_value());
+  EXPECT_EQ(plot->x_label, "a");
+  ASSERT_EQ(plot->series.size(), 2u);
+  EXPECT_EQ(plot->series[0].title, "b = x");
+  EXPECT_EQ(plot->series[0].x, (std::vector<double>{1, 2}));
+  EXPECT_EQ(plot->series[0].y, (std::vector<double>{0, 20}));
+  EXPECT_EQ(plot->series[1].x, (std::vector<double>{1}));  // case 4 did not finish
+  for (auto& r : results) r.summary["f"] = "text";
+  EXPECT_FALSE(sweep_plot_spec(spec, cases, results).has_value());
 }
 
 }  // namespace

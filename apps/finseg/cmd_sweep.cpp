@@ -15,6 +15,7 @@
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "sweep/sweep_plot.hpp"
 #include "sweep/sweep_spec.hpp"
 #include "sweep/sweep_table.hpp"
 #include "writers/atomic_write.hpp"
@@ -108,6 +109,15 @@ void sweep(const SweepOptions& o) {
   const std::string table = (fs::path(o.out) / "sweep.csv").string();
   write_file_atomically(table, sweep_table_csv(spec, cases, results));
   fmt::print("wrote {} ({} cases, {} not ok)\n", table, cases.size(), failed);
+  if (const auto plot = sweep_plot_spec(spec, cases, results)) {
+    const std::string png = (fs::path(o.out) / "sweep.png").string();
+    try {
+      write_plot(png, *plot);
+      fmt::print("wrote {}\n", png);
+    } catch (const std::runtime_error& e) {
+      fmt::print(stderr, "finseg: warning: {} not written: {}\n", png, e.what());
+    }
+  }
   if (failed > 0) throw ExitStatus{3};
 }
 
