@@ -306,7 +306,7 @@ TEST(CliRunSafety, FullDiskFailsClearlyAndLeavesNoFileThatLooksComplete) {
   replace_line(dir / "c.yaml", "vtk: false", "vtk: true");
   const auto r =
       run_finseg(dir, "run c.yaml --out out --quiet", "trap '' XFSZ; ulimit -f 4; exec ");
-  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(r.code, 4);
   EXPECT_NE(r.err.find("disk full?"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out/summary.json"));
   for (const auto& e : fs::recursive_directory_iterator(dir / "out")) {

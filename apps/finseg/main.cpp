@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "apps/finseg/commands.hpp"
+#include "core/error.hpp"
 #include "core/version.hpp"
 
 int main(int argc, char** argv) {
@@ -26,6 +27,9 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const finseg::cli::ExitStatus& e) {
     return e.code;
+  } catch (const finseg::OutputError& e) {
+    fmt::print(stderr, "finseg: error: {}\n", e.what());
+    return 4;
   } catch (const std::exception& e) {
     fmt::print(stderr, "finseg: error: {}\n", e.what());
     return 2;

@@ -18,6 +18,13 @@ class InputError : public std::runtime_error {
   std::string file_, field_;
 };
 
+/// An output that could not be written (disk full, file-size limit, permissions changed
+/// during the run); the command exits with status 4.
+class OutputError : public std::runtime_error {
+ public:
+  explicit OutputError(const std::string& what) : std::runtime_error(what) {}
+};
+
 /// A simulation that cannot go on (NaN, blow-up, no convergence); says when and where.
 class DivergenceError : public std::runtime_error {
  public:

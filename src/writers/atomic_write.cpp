@@ -1,5 +1,7 @@
 #include "writers/atomic_write.hpp"
 
+#include "core/error.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,20 +16,19 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   {
     std::ofstream out(partial, std::ios::binary | std::ios::trunc);
     if (!out) {
-      throw std::runtime_error("cannot open '" + partial +
-                               "' for writing: " + std::strerror(errno));
+      throw OutputError("cannot open '" + partial + "' for writing: " + std::strerror(errno));
     }
     out.write(content.data(), static_cast<std::streamsize>(content.size()));
     out.flush();
     if (!out) {
       std::remove(partial.c_str());
-      throw std::runtime_error("cannot write '" + partial + "' (disk full?)");
+      throw OutputError("cannot write '" + partial + "' (disk full?)");
     }
   }
   if (std::rename(partial.c_str(), path.c_str()) != 0) {
     const std::string why = std::strerror(errno);
     std::remove(partial.c_str());
-    throw std::runtime_error("cannot rename '" + partial + "' to '" + path + "': " + why);
+    throw OutputError("cannot rename '" + partial + "' to '" + path + "': " + why);
   }
 }
 
