@@ -93,9 +93,7 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
   if (o.resume && !o.state_file.empty())
     throw InputError("<cli>", "--resume", "continues DIR's own checkpoint: leave out --state");
   if (o.resume) {
-    const Model& m = scene.model;
-    const bool drive_path = !m.drives.empty() && m.drives[0].travel > 0 && m.drives[0].step > 0;
-    if (scene.solver.kind == SolverKind::Static && !drive_path) {
+    if (scene.solver.kind == SolverKind::Static && !has_drive_path(scene.model)) {
       throw InputError("<cli>", "--resume",
                        "a static run without a drive path has no output between its start and "
                        "its end to continue from: run it again (or use --state "

@@ -66,12 +66,12 @@ SweepCaseResult collect(std::size_t i, const std::string& out, int exit_code) {
     r.summary = nlohmann::json::parse(read_text_file(summary.string()));
     return r;
   }
-  r.failure = fmt::format("exit code {}", exit_code);
   const std::string log = read_text_file((fs::path(out) / (case_folder(i) + ".log")).string());
-  for (std::size_t at = log.rfind("finseg: error: "); at != std::string::npos;) {
-    r.failure = log.substr(at + 15, log.find('\n', at) - at - 15);
-    break;
-  }
+  const std::string marker = "finseg: error: ";
+  const std::size_t at = log.rfind(marker);
+  r.failure = at == std::string::npos
+                  ? fmt::format("exit code {}", exit_code)
+                  : log.substr(at + marker.size(), log.find('\n', at) - at - marker.size());
   return r;
 }
 

@@ -32,6 +32,10 @@ int panel_count(const Model& m) {
   return panels;
 }
 
+bool has_drive_path(const Model& m) {
+  return !m.drives.empty() && m.drives[0].travel > 0 && m.drives[0].step > 0;
+}
+
 Mat3 box_inertia(double mass, const Vec3& size) {
   const Vec3 s2 = size.cwiseProduct(size);
   return (mass / 12.0) * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y()).asDiagonal();

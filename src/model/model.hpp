@@ -119,10 +119,14 @@ struct Model {
   int body_index(const std::string& name) const;  ///< -1 if absent
 };
 
-/// Mass and centroidal inertia of a box of edge lengths `size` and total mass `mass`.
 /// Number of panels (largest BodyDef::panel + 1, at least 1).
 int panel_count(const Model& m);
 
+/// True when drive 0 has a travel and a step: the static solver then follows a quasi-static
+/// pull (one equilibrium per step) after its load stepping.
+bool has_drive_path(const Model& m);
+
+/// Mass and centroidal inertia of a box of edge lengths `size` and total mass `mass`.
 Mat3 box_inertia(double mass, const Vec3& size);
 
 /// Checks sizes, indices and finiteness; throws InputError naming model.source.

@@ -14,8 +14,7 @@ namespace finseg {
 
 std::string abscissa_column(const Model& model, const SolverSettings& settings) {
   if (settings.kind != SolverKind::Static) return "t_s";
-  const bool path = !model.drives.empty() && model.drives[0].travel > 0 && model.drives[0].step > 0;
-  return path ? "pull_displacement_m" : "load_scale";
+  return has_drive_path(model) ? "pull_displacement_m" : "load_scale";
 }
 
 std::string probe_kind_name(ProbeKind kind) {

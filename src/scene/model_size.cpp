@@ -64,7 +64,7 @@ void check_run_size(const Scene& scene, const std::string& drive_step_field) {
   const std::string& file = scene.file;
   if (s.kind == SolverKind::Static) {
     const Model& m = scene.model;
-    if (!m.drives.empty() && m.drives[0].travel > 0 && m.drives[0].step > 0) {
+    if (has_drive_path(m)) {
       checked_step_count(m.drives[0].travel, m.drives[0].step, kMaxSteps, file, drive_step_field);
     }
     return;

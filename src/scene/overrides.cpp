@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "scene/yaml_fields.hpp"
 
 namespace finseg {
 namespace {
@@ -28,9 +29,11 @@ long index_of(const std::string& part) {
   return ec == std::errc() && end == part.data() + part.size() && i >= 0 ? i : -1;
 }
 
-// The child `part` of `node` (a map key or a list index), which must exist.
-YAML::Node child(const YAML::Node& node, const std::string& part, const std::string& where,
+// The child `part` of `node` (a map key or a list index), which must exist; `path` is the
+// node's own dotted path, for messages.
+YAML::Node child(const YAML::Node& node, const std::string& path, const std::string& part,
                  const std::string& file) {
+  const std::string where = child_field(path, part);
   if (node.IsMap()) {
     const YAML::Node c = node[part];
     if (!c) throw InputError(file, where, "no such key in the scene (--set changes existing keys)");
@@ -45,7 +48,7 @@ YAML::Node child(const YAML::Node& node, const std::string& part, const std::str
     }
     return node[static_cast<std::size_t>(i)];
   }
-  throw InputError(file, where, "is a single value, not a map or a list");
+  throw InputError(file, path, "is a single value, not a map or a list");
 }
 
 YAML::Node value_node(const Override& o, const std::string& file) {
@@ -77,21 +80,18 @@ void apply_overrides(YAML::Node& root, const std::vector<Override>& overrides,
     const std::vector<std::string> parts = split_path(o.path);
     YAML::Node node;
     node.reset(root);  // rebinds; assigning would overwrite the root's value
-    std::string where;
+    std::string path;  // of `node`
     for (std::size_t k = 0; k + 1 < parts.size(); ++k) {
-      where += (k ? "." : "") + parts[k];
-      node.reset(child(node, parts[k], where, file));
+      node.reset(child(node, path, parts[k], file));
+      path = child_field(path, parts[k]);
     }
     const std::string& last = parts.back();
     const YAML::Node value = value_node(o, file);
-    if (node.IsSequence()) {
-      child(node, last, o.path, file);  // the index must exist
-      node[static_cast<std::size_t>(index_of(last))] = value;
-    } else if (node.IsMap()) {
-      node[last] = value;
+    if (node.IsMap()) {
+      node[last] = value;  // a new key is checked by its section
     } else {
-      throw InputError(file, where.empty() ? o.path : where,
-                       "is a single value, not a map or a list");
+      child(node, path, last, file);  // refuses a missing index and a single value
+      node[static_cast<std::size_t>(index_of(last))] = value;
     }
   }
 }

@@ -366,7 +366,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   for (Vec3& v : state.v_W) v.setZero();
   for (Vec3& w : state.w_W) w.setZero();
   BodyForces f;
-  const bool path = !model.drives.empty() && model.drives[0].travel > 0 && model.drives[0].step > 0;
+  const bool path = has_drive_path(model);
   if (path && resumes_path(state)) {
     compute_forces(model, state, f);
     on_output(state, f);  // the checkpoint's output (a resumed run does not record it again)
