@@ -29,11 +29,14 @@ void BM_Forces(benchmark::State& st) {
   st.SetComplexityN(st.range(0));
 }
 
+// Closed-form element Jacobians (range 1 = 0) or their automatic-differentiation oracle
+// (range 1 = 1), poses and velocities.
 void BM_ForcesAndJacobian(benchmark::State& st) {
   const Model m = cantilever(static_cast<int>(st.range(0)), 2);
   const State s = initial_state(m);
   BodyForces f;
   ForceJacobian jac;
+  jac.autodiff = st.range(1) != 0;
   for (auto _ : st) {
     compute_forces(m, s, f, &jac);
     benchmark::DoNotOptimize(jac.dq.nonZeros());
@@ -73,7 +76,9 @@ void BM_StaticSolve(benchmark::State& st) {
 }
 
 BENCHMARK(BM_Forces)->RangeMultiplier(4)->Range(16, 4096)->Complexity();
-BENCHMARK(BM_ForcesAndJacobian)->RangeMultiplier(4)->Range(16, 4096)->Complexity();
+BENCHMARK(BM_ForcesAndJacobian)
+    ->ArgsProduct({benchmark::CreateRange(16, 4096, 4), {0, 1}})
+    ->Complexity();
 BENCHMARK(BM_ExplicitStep)->RangeMultiplier(4)->Range(16, 4096)->Complexity();
 BENCHMARK(BM_StaticSolve)
     ->RangeMultiplier(4)

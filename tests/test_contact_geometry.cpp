@@ -246,7 +246,7 @@ Eigen::VectorXd contact_gforce(const Model& m, const State& s) {
   BodyForces f;
   f.f_W.assign(m.bodies.size(), Vec3::Zero());
   f.tau_W.assign(m.bodies.size(), Vec3::Zero());
-  Assembler as(m, s, f, false);
+  Assembler as(m, s, f, nullptr);
   add_contact_forces(m, s, as);
   Eigen::VectorXd g(m.num_dofs);
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
@@ -269,11 +269,12 @@ void check_jacobian(FrictionModel friction, bool with_anchor) {
   BodyForces f;
   f.f_W.assign(2, Vec3::Zero());
   f.tau_W.assign(2, Vec3::Zero());
-  Assembler as(tp.model, tp.state, f, true);
+  ForceJacobian jac;
+  Assembler as(tp.model, tp.state, f, &jac);
   add_contact_forces(tp.model, tp.state, as);
-  Eigen::SparseMatrix<double> dq(12, 12), dv(12, 12);
-  dq.setFromTriplets(as.dq_triplets.begin(), as.dq_triplets.end());
-  dv.setFromTriplets(as.dv_triplets.begin(), as.dv_triplets.end());
+  Eigen::SparseMatrix<double> dq, dv;
+  jac.dq_blocks.to_sparse(12, dq);
+  jac.dv_blocks.to_sparse(12, dv);
   const Eigen::MatrixXd Jq(dq), Jv(dv);
   const Eigen::VectorXd g0 = contact_gforce(tp.model, tp.state);
   EXPECT_GT(g0.norm(), 0);
@@ -322,7 +323,7 @@ TEST(ContactForces, ForcesBalanceAndPushThePlatesApart) {
   BodyForces f;
   f.f_W.assign(2, Vec3::Zero());
   f.tau_W.assign(2, Vec3::Zero());
-  Assembler as(tp.model, tp.state, f, false);
+  Assembler as(tp.model, tp.state, f, nullptr);
   add_contact_forces(tp.model, tp.state, as);
   EXPECT_NEAR((f.f_W[0] + f.f_W[1]).norm(), 0, 1e-12 * f.f_W[0].norm());
   // Angular momentum: total moment about the origin vanishes.

@@ -4,16 +4,27 @@
 #include "elements/assembler.hpp"
 #include "elements/bushing.hpp"
 #include "elements/crease_history.hpp"
+#include "elements/element_jacobian.hpp"
 #include "elements/pressure.hpp"
 
 namespace finseg {
 namespace {
 
 void add_force_elements(const Model& model, const State& state, Assembler& as) {
+  ElementJacobian J;
   for (size_t k = 0; k < model.elements.size(); ++k) {
     const ElementDef& e = model.elements[k];
     const CreaseDef* crease = e.crease >= 0 ? &model.creases[e.crease] : nullptr;
     const ElementHistory& h = state.history[k];
+    if (as.closed_form_blocks(e.inner, e.outer)) {
+      const BodyKin<double> A = as.kin(e.inner), B = as.kin(e.outer);
+      Wrench<double> wa, wb;
+      const double energy = element_kernel(e, crease, h, state.t, A, B, wa, wb);
+      const bool velocity = as.want_velocity_jacobian() && e.C.any();  // else dv = 0
+      element_jacobian(e, crease, h, state.t, A, B, velocity, J);
+      as.pair_blocks(e.inner, e.outer, energy, wa, wb, J.dq, velocity ? &J.dv : nullptr);
+      continue;
+    }
     as.pair(e.inner, e.outer, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
       return element_kernel(e, crease, h, state.t, A, B, wa, wb);
     });
@@ -81,17 +92,15 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   out.f_W.assign(n, Vec3::Zero());
   out.tau_W.assign(n, Vec3::Zero());
   out.potential_energy = 0;
-  Assembler as(model, state, out, jac != nullptr, jac != nullptr && jac->with_velocity);
+  Assembler as(model, state, out, jac);
   add_force_elements(model, state, as);
   add_loads_and_gravity(model, state, as);
   add_pressure_loads(model, state, as);
   add_drives(model, state, as);
   add_contact_forces(model, state, as);
   if (jac) {
-    jac->dq.resize(model.num_dofs, model.num_dofs);
-    jac->dv.resize(model.num_dofs, model.num_dofs);
-    jac->dq.setFromTriplets(as.dq_triplets.begin(), as.dq_triplets.end());
-    jac->dv.setFromTriplets(as.dv_triplets.begin(), as.dv_triplets.end());
+    jac->dq_blocks.to_sparse(model.num_dofs, jac->dq);
+    jac->dv_blocks.to_sparse(model.num_dofs, jac->dv);
   }
 }
 

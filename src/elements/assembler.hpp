@@ -18,15 +18,29 @@ namespace finseg {
 
 class Assembler {
  public:
-  Assembler(const Model& model, const State& state, BodyForces& out, bool want_jacobian,
-            bool want_velocity_jacobian = true)
+  /// jac: where the Jacobian goes (its block scratch is filled); null for forces only.
+  Assembler(const Model& model, const State& state, BodyForces& out, ForceJacobian* jac)
       : model_(model),
         state_(state),
         out_(out),
-        want_jacobian_(want_jacobian),
-        want_velocity_(want_velocity_jacobian) {}
+        jac_(jac),
+        want_jacobian_(jac != nullptr),
+        want_velocity_(jac != nullptr && jac->with_velocity),
+        autodiff_elements_(jac != nullptr && jac->autodiff) {
+    if (jac_) {
+      jac_->dq_blocks.clear();
+      jac_->dv_blocks.clear();
+    }
+  }
 
   bool want_jacobian() const { return want_jacobian_; }
+  bool want_velocity_jacobian() const { return want_velocity_; }
+  /// Whether a two-body element between a and b should hand in closed-form blocks
+  /// (pair_blocks) rather than be differentiated automatically (pair).
+  bool closed_form_blocks(int a, int b) const {
+    return want_jacobian_ && !autodiff_elements_ &&
+           (model_.dof_of_body[a] >= 0 || model_.dof_of_body[b] >= 0);
+  }
   const Model& model() const { return model_; }
   const State& state() const { return state_; }
 
@@ -49,6 +63,26 @@ class Assembler {
       pair_jacobian<24>(a, b, kernel);
     } else {
       pair_jacobian<12>(a, b, kernel);
+    }
+  }
+
+  /// Adds a two-body element's wrenches, energy and Jacobian blocks (rows and columns as in
+  /// ElementJacobian); dv null: the element's forces do not depend on the velocities.
+  void pair_blocks(int a, int b, double energy, const Wrench<double>& wa, const Wrench<double>& wb,
+                   const Mat12& dq, const Mat12* dv) {
+    out_.potential_energy += energy;
+    add(a, wa);
+    add(b, wb);
+    const int bodies[2] = {a, b};
+    for (int ra = 0; ra < 2; ++ra) {
+      const int row0 = model_.dof_of_body[bodies[ra]];
+      if (row0 < 0) continue;
+      for (int cb = 0; cb < 2; ++cb) {
+        const int col0 = model_.dof_of_body[bodies[cb]];
+        if (col0 < 0) continue;
+        jac_->dq_blocks.add(row0, col0, dq.block<6, 6>(6 * ra, 6 * cb));
+        if (want_velocity_ && dv) jac_->dv_blocks.add(row0, col0, dv->block<6, 6>(6 * ra, 6 * cb));
+      }
     }
   }
 
@@ -76,8 +110,6 @@ class Assembler {
 
   /// Adds potential energy that has no force of its own (bookkeeping).
   void add_energy(double e) { out_.potential_energy += e; }
-
-  std::vector<Eigen::Triplet<double>> dq_triplets, dv_triplets;
 
  private:
   // N derivatives: poses of both bodies (12), plus their velocities when N = 24.
@@ -146,18 +178,20 @@ class Assembler {
     for (int s = 0; s < n; ++s) {
       const int col0 = model_.dof_of_body[bodies[s]];
       if (col0 < 0) continue;
+      Mat6 bq;
       for (int r = 0; r < 6; ++r) {
         const auto& d = r < 3 ? w.f_W[r].derivatives() : w.tau_W[r - 3].derivatives();
-        for (int c = 0; c < 6; ++c) {
-          const double q = d[6 * s + c];
-          if (q != 0.0) dq_triplets.emplace_back(row0 + r, col0 + c, q);
-          if constexpr (N == 12 * 2 || N == 12) {
-            if (N == 12 * n) {
-              const double v = d[6 * n + 6 * s + c];
-              if (v != 0.0) dv_triplets.emplace_back(row0 + r, col0 + c, v);
-            }
-          }
+        for (int c = 0; c < 6; ++c) bq(r, c) = d[6 * s + c];
+      }
+      jac_->dq_blocks.add(row0, col0, bq);
+      if constexpr (N == 12 * 2 || N == 12) {
+        if (N != 12 * n) continue;  // N = 12 with two bodies: no velocity derivatives
+        Mat6 bv;
+        for (int r = 0; r < 6; ++r) {
+          const auto& d = r < 3 ? w.f_W[r].derivatives() : w.tau_W[r - 3].derivatives();
+          for (int c = 0; c < 6; ++c) bv(r, c) = d[6 * n + 6 * s + c];
         }
+        jac_->dv_blocks.add(row0, col0, bv);
       }
     }
   }
@@ -165,8 +199,10 @@ class Assembler {
   const Model& model_;
   const State& state_;
   BodyForces& out_;
+  ForceJacobian* jac_;
   bool want_jacobian_;
   bool want_velocity_;
+  bool autodiff_elements_;
 };
 
 }  // namespace finseg

@@ -36,6 +36,9 @@ struct Wrench {
   }
 };
 
+/// Jacobian block of a two-body element: 12 wrench rows by 12 pose or velocity columns.
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+
 /// Forward-mode scalar for N perturbation variables.
 template <int N>
 using AutoDiff = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
