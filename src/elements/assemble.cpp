@@ -2,34 +2,12 @@
 
 #include "collision/contact_forces.hpp"
 #include "elements/assembler.hpp"
-#include "elements/bushing.hpp"
 #include "elements/crease_history.hpp"
-#include "elements/element_jacobian.hpp"
+#include "elements/force_elements.hpp"
 #include "elements/pressure.hpp"
 
 namespace finseg {
 namespace {
-
-void add_force_elements(const Model& model, const State& state, Assembler& as) {
-  ElementJacobian J;
-  for (size_t k = 0; k < model.elements.size(); ++k) {
-    const ElementDef& e = model.elements[k];
-    const CreaseDef* crease = e.crease >= 0 ? &model.creases[e.crease] : nullptr;
-    const ElementHistory& h = state.history[k];
-    if (as.closed_form_blocks(e.inner, e.outer)) {
-      const BodyKin<double> A = as.kin(e.inner), B = as.kin(e.outer);
-      Wrench<double> wa, wb;
-      const double energy = element_kernel(e, crease, h, state.t, A, B, wa, wb);
-      const bool velocity = as.want_velocity_jacobian() && e.C.any();  // else dv = 0
-      element_jacobian(e, crease, h, state.t, A, B, velocity, J);
-      as.pair_blocks(e.inner, e.outer, energy, wa, wb, J.dq, velocity ? &J.dv : nullptr);
-      continue;
-    }
-    as.pair(e.inner, e.outer, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
-      return element_kernel(e, crease, h, state.t, A, B, wa, wb);
-    });
-  }
-}
 
 void add_loads_and_gravity(const Model& model, const State& state, Assembler& as) {
   const double lambda = state.load_scale;

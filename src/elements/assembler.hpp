@@ -16,6 +16,16 @@
 
 namespace finseg {
 
+/// Where a two-body element's Jacobian blocks go (Assembler::reserve_pair): the block slots
+/// of its (row body, column body) pairs, -1 where a body is fixed.
+struct PairSlots {
+  int row0[2] = {-1, -1};  ///< first dof of the inner and outer body (-1: fixed)
+  int first_dq = -1;       ///< first dq slot (count: free bodies squared)
+  int first_dv = -1;       ///< first dv slot, or -1 when the element has no velocity terms
+  bool with_velocity = false;
+  bool any() const { return row0[0] >= 0 || row0[1] >= 0; }
+};
+
 class Assembler {
  public:
   /// jac: where the Jacobian goes (its block scratch is filled); null for forces only.
@@ -35,15 +45,7 @@ class Assembler {
 
   bool want_jacobian() const { return want_jacobian_; }
   bool want_velocity_jacobian() const { return want_velocity_; }
-  /// Whether a two-body element between a and b should hand in closed-form blocks
-  /// (pair_blocks) rather than be differentiated automatically (pair).
-  bool closed_form_blocks(int a, int b) const {
-    return want_jacobian_ && !autodiff_elements_ &&
-           (model_.dof_of_body[a] >= 0 || model_.dof_of_body[b] >= 0);
-  }
-  const Model& model() const { return model_; }
-  const State& state() const { return state_; }
-
+  bool autodiff_elements() const { return autodiff_elements_; }
   /// Plain kinematics of body i from the state.
   BodyKin<double> kin(int i) const {
     return {state_.p_W[i], state_.R_WB[i], state_.v_W[i], state_.w_W[i]};
@@ -66,22 +68,31 @@ class Assembler {
     }
   }
 
-  /// Adds a two-body element's wrenches, energy and Jacobian blocks (rows and columns as in
-  /// ElementJacobian); dv null: the element's forces do not depend on the velocities.
-  void pair_blocks(int a, int b, double energy, const Wrench<double>& wa, const Wrench<double>& wb,
-                   const Mat12& dq, const Mat12* dv) {
-    out_.potential_energy += energy;
-    add(a, wa);
-    add(b, wb);
-    const int bodies[2] = {a, b};
+  /// Reserves the Jacobian block slots of a two-body element between bodies a (inner) and
+  /// b (outer), in order; sequential. The slots are filled later by fill_pair, in parallel.
+  PairSlots reserve_pair(int a, int b, bool with_velocity) {
+    PairSlots s;
+    s.row0[0] = model_.dof_of_body[a];
+    s.row0[1] = model_.dof_of_body[b];
+    const int free = (s.row0[0] >= 0) + (s.row0[1] >= 0);
+    s.first_dq = jac_->dq_blocks.append(free * free);
+    s.with_velocity = with_velocity && free > 0;
+    if (s.with_velocity) s.first_dv = jac_->dv_blocks.append(free * free);
+    return s;
+  }
+
+  /// Writes an element's blocks (rows and columns as in ElementJacobian) into its slots;
+  /// dv is read only when the slots have velocity terms. Safe in parallel across elements.
+  void fill_pair(const PairSlots& s, const Mat12& dq, const Mat12& dv) {
+    int q = s.first_dq, v = s.first_dv;
     for (int ra = 0; ra < 2; ++ra) {
-      const int row0 = model_.dof_of_body[bodies[ra]];
-      if (row0 < 0) continue;
+      if (s.row0[ra] < 0) continue;
       for (int cb = 0; cb < 2; ++cb) {
-        const int col0 = model_.dof_of_body[bodies[cb]];
-        if (col0 < 0) continue;
-        jac_->dq_blocks.add(row0, col0, dq.block<6, 6>(6 * ra, 6 * cb));
-        if (want_velocity_ && dv) jac_->dv_blocks.add(row0, col0, dv->block<6, 6>(6 * ra, 6 * cb));
+        if (s.row0[cb] < 0) continue;
+        jac_->dq_blocks.set(q++, s.row0[ra], s.row0[cb], dq.block<6, 6>(6 * ra, 6 * cb));
+        if (s.with_velocity) {
+          jac_->dv_blocks.set(v++, s.row0[ra], s.row0[cb], dv.block<6, 6>(6 * ra, 6 * cb));
+        }
       }
     }
   }

@@ -30,6 +30,18 @@ class BlockMatrix {
     keys_.emplace_back(row0, col0);
     blocks_.push_back(m);
   }
+  /// Appends `count` blocks to be written by set(); returns the first one's slot.
+  int append(int count) {
+    const int first = static_cast<int>(keys_.size());
+    keys_.resize(first + count);
+    blocks_.resize(first + count);
+    return first;
+  }
+  /// Writes block `slot` (from append); different slots may be written in parallel.
+  void set(int slot, int row0, int col0, const Mat6& m) {
+    keys_[slot] = {row0, col0};
+    blocks_[slot] = m;
+  }
   /// Writes the sum of the blocks into A (n x n, compressed, rows sorted in each column).
   void to_sparse(int n, Eigen::SparseMatrix<double>& A);
 
