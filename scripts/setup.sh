@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   cmake ninja-build g++ clang-format
-  libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libboost-dev nlohmann-json3-dev zlib1g-dev libssl-dev
+  libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libcli11-dev libfmt-dev libboost-dev nlohmann-json3-dev zlib1g-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox libjs-three libjs-chart.js chromium
 )

@@ -1,0 +1,202 @@
+// sparse_solve on manufactured systems A x = b with x known: the 5-point Laplacian of a square
+// grid (closed-form eigenvalues 4 - 2 cos(pi i/(n+1)) - 2 cos(pi j/(n+1))), shifted to be
+// positive definite or indefinite, with a skew part added to make it unsymmetric. The error
+// bound is the classical one: relative error <= condition number * backward error, with the
+// solver's accepted backward error (1e-14) and the condition number from the eigenvalues.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <Eigen/SVD>
+
+#include "solvers/linear_solve.hpp"
+
+namespace finseg {
+namespace {
+
+using SpMat = Eigen::SparseMatrix<double>;
+
+// What sparse_solve accepts (componentwise, linear_solve.cpp; it bounds the normwise one).
+constexpr double kBackwardError = 1e-14;
+
+// Laplacian of an n x n grid (Dirichlet), minus sigma I, plus `skew` times the upwind
+// convection operator's skew part (x-direction differences).
+SpMat grid_matrix(int n, double sigma, double skew = 0) {
+  std::vector<Eigen::Triplet<double>> t;
+  auto id = [n](int i, int j) { return i * n + j; };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      t.emplace_back(id(i, j), id(i, j), 4.0 - sigma);
+      if (i > 0) t.emplace_back(id(i, j), id(i - 1, j), -1.0 + skew);
+      if (i + 1 < n) t.emplace_back(id(i, j), id(i + 1, j), -1.0 - skew);
+      if (j > 0) t.emplace_back(id(i, j), id(i, j - 1), -1.0);
+      if (j + 1 < n) t.emplace_back(id(i, j), id(i, j + 1), -1.0);
+    }
+  }
+  SpMat A(n * n, n * n);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+// Sorted eigenvalues of the n x n grid Laplacian (closed form).
+std::vector<double> laplacian_eigenvalues(int n) {
+  std::vector<double> lambda;
+  for (int i = 1; i <= n; ++i) {
+    for (int j = 1; j <= n; ++j) {
+      lambda.push_back(4 - 2 * std::cos(std::numbers::pi * i / (n + 1)) -
+                       2 * std::cos(std::numbers::pi * j / (n + 1)));
+    }
+  }
+  std::sort(lambda.begin(), lambda.end());
+  return lambda;
+}
+
+// 2-norm condition number of the symmetric L - sigma I.
+double condition_number(int n, double sigma) {
+  double lo = INFINITY, hi = 0;
+  for (const double l : laplacian_eigenvalues(n)) {
+    lo = std::min(lo, std::abs(l - sigma));
+    hi = std::max(hi, std::abs(l - sigma));
+  }
+  return hi / lo;
+}
+
+Eigen::VectorXd known_solution(int size) {
+  Eigen::VectorXd x(size);
+  for (int k = 0; k < size; ++k) x[k] = std::sin(0.37 * k) + 0.5 * std::cos(1.3 * k * k);
+  return x;
+}
+
+double relative_error(const Eigen::VectorXd& x, const Eigen::VectorXd& x_true) {
+  return (x - x_true).norm() / x_true.norm();
+}
+
+void expect_solves(const SpMat& A, double cond, LinearSolveInfo& info) {
+  const Eigen::VectorXd x_true = known_solution(static_cast<int>(A.rows()));
+  const Eigen::VectorXd b = A * x_true;
+  Eigen::VectorXd x;
+  ASSERT_TRUE(sparse_solve(A, b, x, &info));
+  EXPECT_LT((A * x - b).norm() / b.norm(), 1e-12);
+  // 2-norm bound from the infinity-norm backward error: a factor sqrt(size) for the norms.
+  EXPECT_LT(relative_error(x, x_true), std::sqrt(double(A.rows())) * cond * kBackwardError);
+}
+
+TEST(LinearSolve, SymmetricPositiveDefiniteTakesTheCholmodPath) {
+  for (const int n : {8, 120}) {  // CHOLMOD's simplicial L D L^T, then its supernodal L L^T
+    const double sigma = -0.5;
+    LinearSolveInfo info;
+    expect_solves(grid_matrix(n, sigma), condition_number(n, sigma), info);
+    EXPECT_NE(info.path, LinearSolvePath::LU) << n;
+    EXPECT_EQ(info.asymmetry, 0) << n;
+    EXPECT_LE(info.refinements, 1) << n;
+  }
+  const double cond = condition_number(120, -0.5);
+  EXPECT_LT(cond, 20);  // so the bound above is a 1e-10 one at most
+}
+
+TEST(LinearSolve, LargeSymmetricPositiveDefiniteUsesCholesky) {
+  LinearSolveInfo info;
+  expect_solves(grid_matrix(120, -0.5), condition_number(120, -0.5), info);
+  EXPECT_EQ(info.path, LinearSolvePath::Cholesky);
+}
+
+TEST(LinearSolve, SymmetricIndefiniteUsesLdlt) {
+  for (const int n : {8, 120}) {
+    // sigma halfway between two eigenvalues in the lower part of the spectrum: several
+    // negative pivots, a moderate condition number.
+    const std::vector<double> lambda = laplacian_eigenvalues(n);
+    const double sigma = 0.5 * (lambda[3] + lambda[4]);
+    const double cond = condition_number(n, sigma);
+    ASSERT_LT(cond, 1e5) << n;
+    LinearSolveInfo info;
+    expect_solves(grid_matrix(n, sigma), cond, info);
+    EXPECT_EQ(info.path, LinearSolvePath::LDLT) << n;
+  }
+}
+
+TEST(LinearSolve, RoundOffAsymmetryTakesTheSymmetricPathAndIsRefined) {
+  // A skew part at the level of assembly round-off (1e-15 relative) is symmetric for the
+  // solver: CHOLMOD on the symmetric part, refined against the whole matrix.
+  const SpMat A = grid_matrix(30, -0.5, 1e-15);
+  LinearSolveInfo info;
+  // The skew part changes the condition number by a relative 1e-15 at most; bound with 2x.
+  expect_solves(A, 2 * condition_number(30, -0.5), info);
+  EXPECT_NE(info.path, LinearSolvePath::LU);
+  EXPECT_GT(info.asymmetry, 0);
+}
+
+TEST(LinearSolve, SlightAsymmetryBeyondRoundOffUsesLu) {
+  // A skew part of 1e-4 (relative), like a Newton matrix of the sheet away from equilibrium.
+  const SpMat A = grid_matrix(30, -0.5, 1e-4);
+  LinearSolveInfo info;
+  expect_solves(A, 2 * condition_number(30, -0.5), info);
+  EXPECT_EQ(info.path, LinearSolvePath::LU);
+  EXPECT_GT(info.asymmetry, 1e-6);
+}
+
+TEST(LinearSolve, UnsymmetricUsesLu) {
+  // Strong convection (skew 0.5): far from symmetric.
+  const SpMat A = grid_matrix(12, -0.5, 0.5);
+  const Eigen::VectorXd x_true = known_solution(static_cast<int>(A.rows()));
+  const Eigen::VectorXd b = A * x_true;
+  Eigen::VectorXd x;
+  LinearSolveInfo info;
+  ASSERT_TRUE(sparse_solve(A, b, x, &info));
+  EXPECT_EQ(info.path, LinearSolvePath::LU);
+  EXPECT_GT(info.asymmetry, 0.1);
+  EXPECT_LT((A * x - b).norm() / b.norm(), 1e-12);
+  // Its singular values are not in closed form; the dense solution is the reference.
+  const Eigen::MatrixXd Ad(A);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Ad);
+  const double cond = svd.singularValues()(0) / svd.singularValues().tail(1)(0);
+  EXPECT_LT(relative_error(x, x_true), std::sqrt(double(A.rows())) * cond * kBackwardError);
+}
+
+TEST(LinearSolve, SingularMatrixIsRefused) {
+  // An unrestrained degree of freedom: its row and column are zero.
+  for (const double skew : {0.0, 0.5}) {
+    SpMat A = grid_matrix(6, -0.5, skew);
+    A.prune([](int i, int j, double) { return i != 7 && j != 7; });
+    Eigen::VectorXd x;
+    EXPECT_FALSE(sparse_solve(A, Eigen::VectorXd::Ones(A.rows()), x)) << skew;
+  }
+}
+
+TEST(LinearSolve, NonFiniteEntriesAreRefused) {
+  SpMat A = grid_matrix(4, -0.5);
+  Eigen::VectorXd x, b = Eigen::VectorXd::Ones(A.rows());
+  b[3] = NAN;
+  EXPECT_FALSE(sparse_solve(A, b, x));
+  A.coeffRef(2, 2) = INFINITY;
+  EXPECT_FALSE(sparse_solve(A, Eigen::VectorXd::Ones(A.rows()), x));
+}
+
+TEST(LinearSolve, RepeatedSolvesAreBitIdentical) {
+  // The same system solved again (analysis reused) and after another pattern in between.
+  const SpMat A = grid_matrix(120, 0.3), other = grid_matrix(10, 0.0);
+  const Eigen::VectorXd b = A * known_solution(static_cast<int>(A.rows()));
+  Eigen::VectorXd x1, x2, x3, y;
+  ASSERT_TRUE(sparse_solve(A, b, x1));
+  ASSERT_TRUE(sparse_solve(A, b, x2));
+  ASSERT_TRUE(sparse_solve(other, Eigen::VectorXd::Ones(other.rows()), y));
+  ASSERT_TRUE(sparse_solve(A, b, x3));
+  EXPECT_EQ(x1, x2);
+  EXPECT_EQ(x1, x3);
+}
+
+TEST(LinearSolve, AsymmetryRatio) {
+  SpMat A(2, 2);
+  A.insert(0, 0) = 3;
+  A.insert(0, 1) = 1;
+  A.insert(1, 0) = 0;  // stored zero: the pattern stays symmetric, the values do not
+  A.insert(1, 1) = 3;
+  // ||A - A^T||_F = sqrt(1 + 1), ||A||_F = sqrt(9 + 1 + 9).
+  EXPECT_DOUBLE_EQ(asymmetry_ratio(A), std::sqrt(2.0 / 19.0));
+  EXPECT_EQ(asymmetry_ratio(SpMat(3, 3)), 0);
+}
+
+}  // namespace
+}  // namespace finseg
