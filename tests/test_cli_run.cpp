@@ -47,6 +47,20 @@ TEST(CliRun, CantileverTipMatchesLinearBeamTheory) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out/animation.html"));  // off for cantilevers
 }
 
+// --threads sets the element loop's threads and summary.json says how many; out of range
+// is refused naming the option.
+TEST(CliRun, ThreadsOptionIsRecordedAndRangeChecked) {
+  TempDir dir;
+  auto r = run_finseg(dir, "gen cantilever --segments 8 --tip-force 0,0,-1e-3 --out c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "run c.yaml --out out --threads 1 --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir / "out/summary.json"))["threads"], 1);
+  r = run_finseg(dir, "run c.yaml --out out2 --threads -2 --quiet");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+}
+
 // First bending frequency of a clamped-free beam: beta_1 L = 1.87510407,
 // f = (beta_1 L)^2 / (2 pi L^2) sqrt(E I / (rho A)).
 TEST(CliModes, CantileverFirstFrequency) {

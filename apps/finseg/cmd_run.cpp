@@ -14,6 +14,7 @@
 #include "apps/finseg/commands.hpp"
 #include "apps/finseg/progress.hpp"
 #include "core/error.hpp"
+#include "elements/force_elements.hpp"
 #include "probes/recorder.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
@@ -37,6 +38,7 @@ struct RunOptions {
   double checkpoint_every = 30;  // wall seconds between checkpoints (0: every output)
   double progress_every = 5;     // wall seconds between progress lines off a terminal
   std::vector<std::string> set;  // --set KEY.PATH=VALUE
+  int threads = 0;               // 0: one per core (OpenMP's default, OMP_NUM_THREADS)
 };
 
 volatile std::sig_atomic_t g_signal = 0;
@@ -158,6 +160,7 @@ class Checkpointer {
 
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
+  if (o.threads > 0) set_force_element_threads(o.threads);
   std::vector<Override> overrides;
   for (const std::string& s : o.set) overrides.push_back(parse_override(s));
   const Scene scene = read_scene(o.scene, overrides);
@@ -250,6 +253,11 @@ void register_run(CLI::App& app) {
   run->add_option("--progress-every", o->progress_every,
                   "wall seconds between progress lines when stderr is not a terminal")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  run->add_option("--threads", o->threads,
+                  "threads for the force elements (0: one per core or OMP_NUM_THREADS; results "
+                  "are the same for any number)")
+      ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   run->callback([o] { run_scene(*o); });
 }

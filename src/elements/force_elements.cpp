@@ -39,6 +39,10 @@ int force_element_threads() {
   return omp_get_max_threads();
 }
 
+void set_force_element_threads(int n) {
+  omp_set_num_threads(n);
+}
+
 void add_force_elements(const Model& model, const State& state, Assembler& as) {
   if (as.want_jacobian() && as.autodiff_elements()) {
     add_elements_autodiff(model, state, as);

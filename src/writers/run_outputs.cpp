@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/warnings.hpp"
+#include "elements/force_elements.hpp"
 #include "probes/deployment_peak.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/html_animation.hpp"
@@ -316,6 +317,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                    {"status", stats.status},
                    {"message", stats.message},
                    {"wall_time_s", wall_seconds},
+                   {"threads", force_element_threads()},
                    {"solver", solver_json(scene.solver)},
                    {"stats", stats_json(stats)},
                    {"model", model_counts(scene.model)},
