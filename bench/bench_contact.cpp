@@ -29,8 +29,7 @@ Scene make_scene(int n) {
     for (int i = 0; i < side && made < n; ++i)
       for (int j = 0; j < side + 1 && made < n; ++j, ++made) {
         BodyDef b;
-        b.mass = 2e-6;
-        b.size = Vec3(L, L, t);
+        set_box(b, Vec3(L, L, t), 2e-6);
         b.J_B = Mat3::Identity() * 1e-12;
         b.fixed = k == 0;
         b.panel = k;

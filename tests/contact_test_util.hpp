@@ -14,9 +14,7 @@ inline BodyDef plate(const std::string& name, double mass, const Vec3& size, con
                      const Mat3& R = Mat3::Identity(), bool fixed = false) {
   BodyDef b;
   b.name = name;
-  b.mass = mass;
-  b.size = size;
-  b.J_B = box_inertia(mass, size);
+  set_box(b, size, mass);
   b.p0_W = p;
   b.R0_WB = R;
   b.fixed = fixed;

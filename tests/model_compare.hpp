@@ -16,15 +16,13 @@ inline void expect_same_model(const Model& a, const Model& b) {
     EXPECT_EQ(x.name, y.name);
     EXPECT_EQ(x.mass, y.mass);
     EXPECT_EQ(x.J_B, y.J_B);
-    EXPECT_EQ(x.size, y.size);
+    EXPECT_EQ(x.outline_B, y.outline_B);
+    EXPECT_EQ(x.thickness, y.thickness);
     EXPECT_EQ(x.p0_W, y.p0_W);
     EXPECT_EQ(x.R0_WB, y.R0_WB);
     EXPECT_EQ(x.fixed, y.fixed);
     EXPECT_EQ(x.panel, y.panel);
-    EXPECT_EQ(x.s_min, y.s_min);
-    EXPECT_EQ(x.s_max, y.s_max);
-    EXPECT_EQ(x.y_min, y.y_min);
-    EXPECT_EQ(x.y_max, y.y_max);
+    EXPECT_EQ(x.centroid_M, y.centroid_M);
   }
   ASSERT_EQ(a.elements.size(), b.elements.size());
   for (std::size_t k = 0; k < a.elements.size(); ++k) {

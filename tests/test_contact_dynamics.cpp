@@ -467,9 +467,7 @@ TEST(ContactDynamics, FoldedPanelsPressedTogetherNeverPassThrough) {
                       top ? Vec3((7 - i + 0.5) * L, 0, gap) : Vec3((i + 0.5) * L, 0, 0),
                       top ? flip : Mat3::Identity(), !top);
     b.panel = top ? 1 : 0;
-    b.s_min = i * L;
-    b.s_max = (i + 1) * L;
-    b.y_max = W;
+    b.centroid_M = Vec2((i + 0.5) * L, 0.5 * W);
     mod.bodies.push_back(b);
   }
   for (int i = 0; i < 7; ++i) {

@@ -26,6 +26,25 @@ Mat3 rot_z(double a) {
   return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
 }
 
+// A rectangular plate shape of half sizes hx, hy and half thickness r, with its outline.
+struct Rect {
+  double hx, hy, r;
+  Outline outline;
+  PlateShape shape;
+  Rect(double hx_, double hy_, double r_)
+      : hx(hx_), hy(hy_), r(r_), outline(rectangle_outline(2 * hx_, 2 * hy_)) {
+    shape = {&outline, 4 * hx * hy, r};
+  }
+  Rect(const Rect&) = delete;
+};
+
+// A segment of the given box size (z: thickness).
+BodyDef box(const Vec3& size) {
+  BodyDef b;
+  set_box(b, size, 1.0);
+  return b;
+}
+
 // Target plate turned about z and lifted: the point tests run in its frame.
 BodyKin<double> target() {
   return kin(Vec3(0.01, -0.02, 0.003), rot_z(0.4));
@@ -36,40 +55,40 @@ Vec3 in_target(const Vec3& local) {
 }
 
 TEST(RoundedPlate, PointOverTheFaceTouchesAlongTheNormal) {
-  const PlateShape st{0.01, 0.005, 5e-5};
+  const Rect st(0.01, 0.005, 5e-5);
   const double r_src = 4e-5, h = 6e-5;
   const PointContact<double> c =
-      point_on_plate(target(), st, in_target({0.003, -0.004, h}), r_src, 1);
+      point_on_plate(target(), st.shape, in_target({0.003, -0.004, h}), r_src, 1);
   EXPECT_NEAR(c.depth, r_src + st.r - h, 1e-16);
   EXPECT_NEAR((c.n_W - target().R_WB.col(2)).norm(), 0, 1e-14);
   // Contact point: half way between the two surfaces (at heights st.r and h - r_src).
   EXPECT_NEAR((c.x_W - in_target({0.003, -0.004, 0.5 * (st.r + h - r_src)})).norm(), 0, 1e-16);
   // Sunk past the mid-plane on the remembered side: still pushed back up, deeper.
   const PointContact<double> sunk =
-      point_on_plate(target(), st, in_target({0.003, -0.004, -1e-5}), r_src, 1);
+      point_on_plate(target(), st.shape, in_target({0.003, -0.004, -1e-5}), r_src, 1);
   EXPECT_NEAR(sunk.depth, r_src + st.r + 1e-5, 1e-16);
   EXPECT_GT(sunk.n_W.dot(target().R_WB.col(2)), 0.999999);
 }
 
 TEST(RoundedPlate, PointsBesideAnEdgeAndBeyondACornerTouchTheRoundedRim) {
-  const PlateShape st{0.01, 0.005, 5e-5};
+  const Rect st(0.01, 0.005, 5e-5);
   const double r_src = 5e-5;
   // Beside the edge x = +hx: distance to the edge line in the x-z plane.
   const double a = 3e-5, b = 4e-5;  // distance 5e-5
   const PointContact<double> e =
-      point_on_plate(target(), st, in_target({st.hx + a, 0.001, b}), r_src, 1);
+      point_on_plate(target(), st.shape, in_target({st.hx + a, 0.001, b}), r_src, 1);
   EXPECT_NEAR(e.depth, r_src + st.r - 5e-5, 1e-16);
   EXPECT_NEAR((e.n_W - target().R_WB * Vec3(0.6, 0, 0.8)).norm(), 0, 1e-12);
   // Beyond the corner (+hx, -hy): distance to the corner point.
   const Vec3 off(2e-5, -2e-5, 1e-5);  // distance 3e-5
   const PointContact<double> k =
-      point_on_plate(target(), st, in_target(Vec3(st.hx, -st.hy, 0) + off), r_src, 1);
+      point_on_plate(target(), st.shape, in_target(Vec3(st.hx, -st.hy, 0) + off), r_src, 1);
   EXPECT_NEAR(k.depth, r_src + st.r - 3e-5, 1e-16);
   EXPECT_NEAR((k.n_W - target().R_WB * off / 3e-5).norm(), 0, 1e-12);
   // The depth is continuous across the edge and so is its slope (distance to a convex set).
   const double h = 6e-5, eps = 1e-9;
   auto depth_at = [&](double x) {
-    return point_on_plate(target(), st, in_target({x, 0, h}), r_src, 1).depth;
+    return point_on_plate(target(), st.shape, in_target({x, 0, h}), r_src, 1).depth;
   };
   EXPECT_NEAR(depth_at(st.hx - eps) - depth_at(st.hx + eps), eps * eps / (2 * h), 1e-18);
   const double slope_in = (depth_at(st.hx - eps) - depth_at(st.hx - 3 * eps)) / (2 * eps);
@@ -81,9 +100,9 @@ TEST(RoundedPlate, PointsBesideAnEdgeAndBeyondACornerTouchTheRoundedRim) {
 TEST(RoundedPlate, SamplesIntegrateBilinearFunctionsExactly) {
   // Trapezoidal rule: exact for bilinear integrands. Mean of (x + hx)(y + hy) / (4 hx hy)
   // over the rectangle is 1/4; the mean of x y is 0.
-  const PlateShape s{0.02, 0.005, 1e-4};
+  const Rect s(0.02, 0.005, 1e-4);
   for (int n : {2, 3, 5}) {
-    const std::vector<PlateSample> samples = plate_samples(s, n);
+    const std::vector<PlateSample> samples = plate_samples(s.shape, n);
     ASSERT_EQ(samples.size(), static_cast<std::size_t>(n * n));
     double sum = 0, bilinear = 0, xy = 0;
     for (const PlateSample& p : samples) {
@@ -100,14 +119,14 @@ TEST(RoundedPlate, SamplesIntegrateBilinearFunctionsExactly) {
 }
 
 TEST(RoundedPlate, TheSmallerPlateCarriesThePairAndEqualPlatesShareIt) {
-  const PlateShape big{0.05, 0.05, 5e-5}, small{0.01, 0.02, 5e-5};
-  const DirectionShares d1 = direction_shares(small, big);
+  const Rect big(0.05, 0.05, 5e-5), small(0.01, 0.02, 5e-5), turned(0.02, 0.01, 1e-4);
+  const DirectionShares d1 = direction_shares(small.shape, big.shape);
   EXPECT_EQ(d1.a_on_b, 1.0);
   EXPECT_EQ(d1.b_on_a, 0.0);
-  const DirectionShares d2 = direction_shares(big, small);
+  const DirectionShares d2 = direction_shares(big.shape, small.shape);
   EXPECT_EQ(d2.a_on_b, 0.0);
   EXPECT_EQ(d2.b_on_a, 1.0);
-  const DirectionShares d3 = direction_shares(small, PlateShape{0.02, 0.01, 1e-4});
+  const DirectionShares d3 = direction_shares(small.shape, turned.shape);
   EXPECT_EQ(d3.a_on_b, 0.5);
   EXPECT_EQ(d3.b_on_a, 0.5);
 }
@@ -120,13 +139,13 @@ TEST(ContactBroadphase, GridFindsExactlyTheOverlappingBoxes) {
     const Mat3 R = Eigen::AngleAxisd(ang(rng), Vec3(ang(rng), ang(rng), ang(rng)).normalized())
                        .toRotationMatrix();
     boxes.push_back(
-        plate_aabb(Vec3(pos(rng), pos(rng), 0.1 * pos(rng)), R, Vec3(0.01, 0.02, 1e-4), 0));
+        plate_aabb(Vec3(pos(rng), pos(rng), 0.1 * pos(rng)), R, box(Vec3(0.01, 0.02, 1e-4)), 0));
   }
   // A clamped plate much larger than the rest, and a few mid-sized ones.
-  boxes.push_back(plate_aabb(Vec3(0.1, 0.1, 0), Mat3::Identity(), Vec3(0.3, 0.25, 1e-4), 0));
+  boxes.push_back(plate_aabb(Vec3(0.1, 0.1, 0), Mat3::Identity(), box(Vec3(0.3, 0.25, 1e-4)), 0));
   for (int i = 0; i < 5; ++i)
-    boxes.push_back(
-        plate_aabb(Vec3(pos(rng), pos(rng), 0.01), rot_z(ang(rng)), Vec3(0.08, 0.04, 1e-4), 0));
+    boxes.push_back(plate_aabb(Vec3(pos(rng), pos(rng), 0.01), rot_z(ang(rng)),
+                               box(Vec3(0.08, 0.04, 1e-4)), 0));
   const int n = static_cast<int>(boxes.size());
   std::vector<std::pair<int, int>> brute;
   for (int i = 0; i < n; ++i)
@@ -213,7 +232,7 @@ struct TwoPlates {
       BodyDef b;
       b.name = fmt::format("p{}", i);
       b.mass = 1e-3;
-      b.size = Vec3(0.02 + 0.01 * i, 0.01, 2e-4);
+      set_box(b, Vec3(0.02 + 0.01 * i, 0.01, 2e-4), b.mass);
       b.J_B = Mat3::Identity() * 1e-8;
       model.bodies.push_back(b);
     }
@@ -351,13 +370,10 @@ Model folded_strip(double gap) {
     BodyDef b;
     b.name = fmt::format("s{}", i);
     b.mass = 1e-4;
-    b.size = Vec3(L, W, t);
+    set_box(b, Vec3(L, W, t), b.mass);
     b.J_B = Mat3::Identity() * 1e-9;
     b.panel = i < 4 ? 0 : 1;
-    b.s_min = i * L;
-    b.s_max = (i + 1) * L;
-    b.y_min = 0;
-    b.y_max = W;
+    b.centroid_M = Vec2((i + 0.5) * L, 0.5 * W);
     if (i < 4) {
       b.p0_W = Vec3((i + 0.5) * L, 0, 0);
     } else {
@@ -448,7 +464,7 @@ TEST(ContactBroadphase, TiltedCornerEntersTheContactWithZeroDepth) {
     BodyDef b;
     b.name = fmt::format("p{}", i);
     b.mass = 1e-4;
-    b.size = Vec3(L, L, t);
+    set_box(b, Vec3(L, L, t), b.mass);
     b.J_B = Mat3::Identity() * 1e-9;
     m.bodies.push_back(b);
   }

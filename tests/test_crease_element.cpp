@@ -29,9 +29,7 @@ Model two_plates(std::shared_ptr<const CreaseLaw> law, double fold, bool outer_f
   for (int i = 0; i < 2; ++i) {
     BodyDef b;
     b.name = i == 0 ? "outer" : "inner";
-    b.size = Vec3(a, w, t);
-    b.mass = 1e-3;
-    b.J_B = box_inertia(b.mass, b.size);
+    set_box(b, Vec3(a, w, t), 1e-3);
     m.bodies.push_back(b);
   }
   m.bodies[0].p0_W = Vec3(-a / 2, 0, 0);
@@ -136,7 +134,7 @@ void turn_and_check(double fold0, double step, int n) {
   const double k = 0.02;
   Model m = two_plates(std::make_shared<LinearCreaseLaw>(k, 0.0), fold0, true);
   State st = initial_state(m);
-  const double a = m.bodies[1].size.x();
+  const double a = 2 * m.bodies[1].outline_B[1].x();  // plate length
   for (int i = 1; i <= n; ++i) {
     const double alpha = fold0 + i * step;
     // A small twist about the plate's own x axis must not disturb the fold angle.
@@ -182,7 +180,7 @@ TEST(CreaseElement, OpeningCountSwitchesCurve) {
   const double fold0 = kPi - 10 * kDegToRad;
   Model m = two_plates(law, fold0, true);
   State st = initial_state(m);
-  const double a = m.bodies[1].size.x();
+  const double a = 2 * m.bodies[1].outline_B[1].x();  // plate length
   auto set_opening = [&](double theta_deg) {
     const double alpha = kPi - theta_deg * kDegToRad;
     st.R_WB[1] = rot(Vec3(0, alpha, 0));

@@ -26,9 +26,7 @@ Mat3 rot_y(double a) {
 BodyDef plate(const std::string& name, double a) {
   BodyDef b;
   b.name = name;
-  b.size = Vec3(a, 0.04, 1e-4);
-  b.mass = 1e-3;
-  b.J_B = box_inertia(b.mass, b.size);
+  set_box(b, Vec3(a, 0.04, 1e-4), 1e-3);
   return b;
 }
 

@@ -26,9 +26,7 @@ Model two_body_model(const BodyDef& moving, const ElementDef& joint, const Vec3&
                      double length) {
   BodyDef anchor;
   anchor.name = "anchor";
-  anchor.mass = moving.mass;
-  anchor.size = Vec3::Constant(moving.size.z());
-  anchor.J_B = box_inertia(anchor.mass, anchor.size);
+  set_box(anchor, Vec3::Constant(moving.thickness), moving.mass);
   anchor.fixed = true;
   Model m;
   m.bodies = {anchor, moving};
@@ -50,9 +48,7 @@ struct Pendulum {
   explicit Pendulum(double theta0) {
     BodyDef rod;
     rod.name = "rod";
-    rod.mass = mass;
-    rod.size = Vec3(L, w, t);
-    rod.J_B = box_inertia(mass, rod.size);
+    set_box(rod, Vec3(L, w, t), mass);
     // Body x points from the pivot to the free end: R_y(pi/2 - theta0).
     rod.R0_WB = Eigen::AngleAxisd(kPi / 2 - theta0, Vec3::UnitY()).toRotationMatrix();
     rod.p0_W = rod.R0_WB * Vec3(L / 2, 0, 0);
@@ -168,9 +164,7 @@ LinearRun oscillate(double rho_inf, double Omega, int steps) {
   constexpr double k = 100, mass = 0.01, x0 = 1e-3;
   BodyDef b;
   b.name = "mass";
-  b.mass = mass;
-  b.size = Vec3(0.01, 0.01, 0.001);
-  b.J_B = box_inertia(mass, b.size);
+  set_box(b, Vec3(0.01, 0.01, 0.001), mass);
   ElementDef spring;
   spring.name = "spring";
   spring.K << k, k, k, 0, 0, 0;

@@ -27,9 +27,7 @@ namespace fs = std::filesystem;
 
 BodyDef box(const Vec3& size, const Vec3& p0) {
   BodyDef b;
-  b.size = size;
-  b.mass = 2e-3;
-  b.J_B = box_inertia(b.mass, size);
+  set_box(b, size, 2e-3);
   b.p0_W = p0;
   return b;
 }
@@ -64,7 +62,8 @@ TEST(VtkFields, DisplacementAndVelocityOfAMovedBox) {
   vtu = frame_file(tmp.path());
   const std::vector<double> u2 = vtk_read::array(vtu, "displacement_m");
   const std::vector<double> vel = vtk_read::array(vtu, "velocity_m_s");
-  const std::vector<Vec3> c0 = box_corners_W(m.bodies[0].size, Vec3::Zero(), Mat3::Identity());
+  const std::vector<Vec3> c0 =
+      prism_corners_W(m.bodies[0].outline_B, m.bodies[0].thickness, Vec3::Zero(), Mat3::Identity());
   ASSERT_EQ(vel.size(), 24u);
   for (int c = 0; c < 8; ++c) {
     const Vec3 exp_u = f.p_W[0] + R * c0[c] - (m.bodies[0].p0_W + m.bodies[0].R0_WB * c0[c]);

@@ -69,7 +69,17 @@ TEST(HtmlAnimation, SelfContainedPageWithEmbeddedFrames) {
   EXPECT_EQ(d["bodies"]["fixed"][0], 1);
   EXPECT_EQ(d["bodies"]["fixed"][5], 0);
   EXPECT_EQ(d["bodies"]["panel"][17], 5);
-  EXPECT_NEAR(d["bodies"]["size"][2].get<double>(), 2e-4, 1e-12);
+  EXPECT_NEAR(d["bodies"]["thickness"][0].get<double>(), 2e-4, 1e-12);
+  // Outline of body 0 as x, y pairs (6 significant digits): its rectangle,
+  // counter-clockwise from (-a/2, -b/2).
+  const Outline& o = s.model.bodies[0].outline_B;
+  ASSERT_EQ(d["bodies"]["outline"][0].size(), 2 * o.size());
+  for (std::size_t k = 0; k < o.size(); ++k) {
+    EXPECT_NEAR(d["bodies"]["outline"][0][2 * k].get<double>(), o[k].x(),
+                5e-6 * std::abs(o[k].x()));
+    EXPECT_NEAR(d["bodies"]["outline"][0][2 * k + 1].get<double>(), o[k].y(),
+                5e-6 * std::abs(o[k].y()));
+  }
   EXPECT_EQ(d["curve"]["xLabel"], "pull displacement [mm]");
   ASSERT_EQ(d["curve"]["y"].size(), s.frames.size());
 

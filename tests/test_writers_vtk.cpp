@@ -38,10 +38,10 @@ std::vector<double> data_array(const std::string& xml, const std::string& name) 
 Model two_box_model() {
   Model m;
   BodyDef a;
-  a.size = Vec3(2.0, 1.0, 0.5);
+  set_box(a, Vec3(2.0, 1.0, 0.5), 1.0);
   a.panel = 3;
   BodyDef b;
-  b.size = Vec3(1.0, 1.0, 1.0);
+  set_box(b, Vec3(1.0, 1.0, 1.0), 1.0);
   b.fixed = true;
   m.bodies = {a, b};
   return m;
@@ -88,7 +88,7 @@ TEST(VtkWriter, BoxesParseBackWithHandComputedCorners) {
       return Vec3(pts[24 * c + 3 * k], pts[24 * c + 3 * k + 1], pts[24 * c + 3 * k + 2]);
     };
     const double vol = (P(1) - P(0)).cross(P(3) - P(0)).dot(P(4) - P(0));
-    EXPECT_NEAR(vol, m.bodies[c].size.prod(), 1e-12) << "cell " << c;
+    EXPECT_NEAR(vol, segment_area(m.bodies[c]) * m.bodies[c].thickness, 1e-12) << "cell " << c;
   }
 
   const std::vector<double> conn = data_array(vtu, "connectivity");

@@ -79,8 +79,7 @@ inline ZigzagScene make_zigzag_scene(int num_frames = 40) {
     for (int k = 0; k < kSegs; ++k) {
       BodyDef b;
       b.name = fmt::format("p{}s{}", p, k);
-      b.mass = 1e-3;
-      b.size = Vec3(kPanelLength / kSegs, kWidth, kThickness);
+      set_box(b, Vec3(kPanelLength / kSegs, kWidth, kThickness), 1e-3);
       b.panel = p;
       b.fixed = (p == 0 || p == kPanels - 1);
       s.model.bodies.push_back(b);

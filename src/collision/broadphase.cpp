@@ -3,18 +3,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace finseg {
 
-Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const Vec3& size, double margin) {
-  // Extent of the mid-surface rectangle along world axis k: sum over the in-plane body axes
-  // of |R(k, j)| * half size j; then the half thickness in every direction. The narrow phase
-  // takes two plates as touching where their mid-surfaces come closer than the sum of the
-  // half thicknesses (at any angle), so the box is the rectangle swept by a ball of radius
-  // r, not the plate's own box: a tilted corner would otherwise enter with a finite depth.
-  const Vec3 half_rect(0.5 * size.x(), 0.5 * size.y(), 0.0);
-  const Vec3 ext = R_WB.cwiseAbs() * half_rect + Vec3::Constant(0.5 * size.z() + margin);
-  return {p_W - ext, p_W + ext};
+Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const BodyDef& body, double margin) {
+  // The mid-surface polygon's box, grown by the half thickness in every direction. The
+  // narrow phase takes two plates as touching where their mid-surfaces come closer than the
+  // sum of the half thicknesses (at any angle), so the box is the polygon swept by a ball of
+  // radius r, not the plate's own box: a tilted corner would otherwise enter with a finite
+  // depth.
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec2& v : body.outline_B) {
+    const Vec3 c = R_WB.col(0) * v.x() + R_WB.col(1) * v.y();
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  const Vec3 r = Vec3::Constant(0.5 * body.thickness + margin);
+  return {p_W + lo - r, p_W + hi + r};
 }
 
 namespace {

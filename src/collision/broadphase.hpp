@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/model.hpp"
 
 namespace finseg {
 
@@ -18,10 +19,10 @@ struct Aabb {
   Vec3 hi = Vec3::Zero();
 };
 
-/// Box of a thin plate with edge lengths `size` (z = thickness), centroid p_W and
-/// orientation R_WB: its mid-surface rectangle grown by the half thickness in every
-/// direction (the reach of the narrow phase), then by `margin`.
-Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const Vec3& size, double margin);
+/// Box of the segment `body` at centroid p_W and orientation R_WB: its mid-surface polygon
+/// grown by the half thickness in every direction (the reach of the narrow phase), then by
+/// `margin` (m).
+Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const BodyDef& body, double margin);
 
 /// Finds all pairs (i < j) of overlapping boxes, sorted. Keeps its buffers between calls so
 /// that repeated detection does not allocate.

@@ -75,12 +75,9 @@ class PairRules {
       if (nbr_[k] == b) return false;
     // Neighbours on the flat sheet (also diagonal ones and across a crease) share an edge
     // or a corner that the joints hold together: never a contact.
-    if (A.s_max > A.s_min && B.s_max > B.s_min && A.y_max > A.y_min && B.y_max > B.y_min) {
-      const double tol = 1e-3 * std::min({A.s_max - A.s_min, B.s_max - B.s_min, A.y_max - A.y_min,
-                                          B.y_max - B.y_min});
-      const double gap_s = std::max(A.s_min, B.s_min) - std::min(A.s_max, B.s_max);
-      const double gap_y = std::max(A.y_min, B.y_min) - std::min(A.y_max, B.y_max);
-      if (gap_s <= tol && gap_y <= tol) return false;
+    if (A.centroid_M && B.centroid_M) {
+      const double tol = 1e-3 * std::sqrt(std::min(segment_area(A), segment_area(B)));
+      if (polygon_distance(material_outline(A), material_outline(B)) <= tol) return false;
     }
     if (A.panel == B.panel && def_.panel_exclusion > 0 && within_hops(a, b, A.panel)) return false;
     return true;
@@ -131,7 +128,7 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
     const Vec3 was = h.R_WB[tgt].transpose() * (h.p_W[src] + h.R_WB[src] * r_B - h.p_W[tgt]);
     if ((was.z() > 0) != (now.z() > 0)) {
       const Vec3 cross = was + (was.z() / (was.z() - now.z())) * (now - was);
-      if (std::abs(cross.x()) <= st.hx && std::abs(cross.y()) <= st.hy) return was.z() > 0 ? 1 : -1;
+      if (polygon_contains(*st.outline, Vec2(cross.x(), cross.y()), 0)) return was.z() > 0 ? 1 : -1;
     }
     return now.z() >= 0 ? 1 : -1;
   }
@@ -169,7 +166,7 @@ void detect(const Model& model, const State& state, Visit&& visit) {
   thread_local PairContact pc;
   boxes.resize(n);
   for (int i = 0; i < n; ++i)
-    boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i].size, def.margin);
+    boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i], def.margin);
   const auto candidates = broad.find_pairs(boxes);
   if (candidates.empty()) return;
   const PairRules rules(model);
@@ -177,8 +174,8 @@ void detect(const Model& model, const State& state, Visit&& visit) {
     if (!rules.may_touch(a, b)) continue;
     pc.a = a;
     pc.b = b;
-    pc.sa = plate_shape(model.bodies[a].size);
-    pc.sb = plate_shape(model.bodies[b].size);
+    pc.sa = plate_shape(model.bodies[a]);
+    pc.sb = plate_shape(model.bodies[b]);
     pc.points.clear();
     const DirectionShares shares = direction_shares(pc.sa, pc.sb);
     for (int dir = 0; dir < 2; ++dir) {

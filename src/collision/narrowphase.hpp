@@ -1,9 +1,9 @@
 // Narrow phase between two thin plates (segments). Each plate is a rounded plate: its
-// mid-surface rectangle (half sizes hx, hy) swept by a sphere of its half thickness r. The
+// mid-surface polygon (convex) swept by a sphere of its half thickness r. The
 // contact is sampled: a grid of points on the mid-surface of one plate (the source) is
 // tested against the rounded plate of the other (the target). A point p lies in contact
-// where its distance to the target rectangle is below r_src + r_tgt; the normal points from
-// the closest point of the rectangle to p. The distance to a rectangle is continuously
+// where its distance to the target polygon is below r_src + r_tgt; the normal points from
+// the closest point of the polygon to p. The distance to a convex polygon is continuously
 // differentiable outside it, so forces stay smooth while plates slide over edges, meet
 // edge to edge or tilt, which the static solver's Newton iteration needs.
 //
@@ -14,22 +14,65 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // Eigen/Dense must come before the AutoDiff header that kinematics.hpp pulls in.
 #include "core/types.hpp"
 
 #include "elements/kinematics.hpp"
+#include "model/model.hpp"
 
 namespace finseg {
 
-/// Shape of a segment: half sizes of the mid-surface rectangle and half thickness.
+/// Shape of a segment: its mid-surface polygon (body frame), area and half thickness.
 struct PlateShape {
-  double hx = 0, hy = 0, r = 0;
+  const Outline* outline = nullptr;
+  double area = 0;  ///< m^2
+  double r = 0;     ///< half thickness, m
 };
 
-inline PlateShape plate_shape(const Vec3& size) {
-  return {0.5 * size.x(), 0.5 * size.y(), 0.5 * size.z()};
+inline PlateShape plate_shape(const BodyDef& b) {
+  return {&b.outline_B, segment_area(b), 0.5 * b.thickness};
+}
+
+/// Offset (du, dv) of the in-plane point (u, v) from the closest point of the convex
+/// polygon, zero inside. Beside an edge it is the offset along the edge's outward normal
+/// (exact for edges along the axes); beyond a corner, the offset from the vertex.
+template <class T>
+void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
+  const std::size_t n = poly.size();
+  const double uu = value_of(u), vv = value_of(v);
+  double best = std::numeric_limits<double>::infinity();
+  int edge = -1, vertex = -1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = poly[i], &b = poly[(i + 1) % n];
+    const Vec2 e = b - a;
+    const double len = e.norm();
+    const double dn = (e.y() / len) * (uu - a.x()) + (-e.x() / len) * (vv - a.y());
+    if (!(dn > 0)) continue;
+    const double st = (e.x() / len) * (uu - a.x()) + (e.y() / len) * (vv - a.y());
+    if (st >= 0 && st <= len) {
+      if (dn < best) best = dn, edge = static_cast<int>(i), vertex = -1;
+    } else {
+      const std::size_t k = st < 0 ? i : (i + 1) % n;
+      const double d = std::hypot(uu - poly[k].x(), vv - poly[k].y());
+      if (d < best) best = d, vertex = static_cast<int>(k), edge = -1;
+    }
+  }
+  if (edge >= 0) {
+    const Vec2 &a = poly[edge], e = poly[(edge + 1) % n] - a;
+    const double len = e.norm();
+    const double nx = e.y() / len, ny = -e.x() / len;
+    const T dn = T(nx) * (u - T(a.x())) + T(ny) * (v - T(a.y()));
+    du = dn * T(nx);
+    dv = dn * T(ny);
+  } else if (vertex >= 0) {
+    du = u - T(poly[vertex].x());
+    dv = v - T(poly[vertex].y());
+  } else {
+    du = dv = T(0);
+  }
 }
 
 /// One sample point of a plate: position in the body frame (mid-surface) and weight.
@@ -38,8 +81,12 @@ struct PlateSample {
   double weight = 0;
 };
 
-/// n x n grid of samples over the mid-surface rectangle, corners and edges included,
-/// trapezoidal weights (sum 1). n >= 2.
+/// Samples over the mid-surface polygon, vertices and sides included, weights summing to 1:
+/// a parallelogram (a rectangle) carries the n x n grid with trapezoidal weights (exact for
+/// bilinear functions); any other polygon is fanned into triangles from its first vertex,
+/// each carrying its lattice of n points per side, a point weighted by a third of the area of
+/// the lattice triangles around it (exact for linear functions: the samples' centroid is the
+/// polygon's). n >= 2.
 std::vector<PlateSample> plate_samples(const PlateShape& s, int n);
 
 /// Shares of the two directions of a pair (points of a on b, points of b on a): the plate
@@ -60,7 +107,7 @@ struct PointContact {
 
 /// Contact of the source point p_W (on a plate of half thickness r_src) with the target
 /// rounded plate. `side` (+1 / -1) is the face of the target the point is on; it decides
-/// the normal only above the rectangle itself, where it keeps a point that has sunk past
+/// the normal only above the polygon itself, where it keeps a point that has sunk past
 /// the target's mid-plane pushing back towards its own side.
 template <class T>
 PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, const Vec3T<T>& p_W,
@@ -69,12 +116,8 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
   const Vec3T<T> ex = tgt.R_WB.col(0), ey = tgt.R_WB.col(1), ez = tgt.R_WB.col(2);
   const Vec3T<T> d = p_W - tgt.p_W;
   const T u = ex.dot(d), v = ey.dot(d), h = ez.dot(d);
-  auto outside = [](const T& x, double half) {  // x minus its clamp to [-half, half]
-    if (value_of(x) > half) return T(x - T(half));
-    if (value_of(x) < -half) return T(x + T(half));
-    return T(0);
-  };
-  const T du = outside(u, st.hx), dv = outside(v, st.hy);
+  T du, dv;
+  polygon_offset(*st.outline, u, v, du, dv);
   PointContact<T> c;
   c.height = h;
   T dist;

@@ -15,19 +15,14 @@ Vec3 outward_normal_W(const State& state, const ChamberFace& face) {
   return face.outward_plus_z ? z_W : Vec3(-z_W);
 }
 
-double face_area(const Model& model, const ChamberFace& face) {
-  const Vec3& s = model.bodies[face.body].size;
-  return s.x() * s.y();
-}
-
-// Corners of the mid-surface rectangle, counter-clockwise seen from the outward side.
-std::array<Vec3, 4> corners_W(const Model& model, const State& state, const ChamberFace& face) {
-  const Vec3 h = 0.5 * model.bodies[face.body].size;
-  std::array<Vec3, 4> c_B = {Vec3(-h.x(), -h.y(), 0), Vec3(h.x(), -h.y(), 0), Vec3(h.x(), h.y(), 0),
-                             Vec3(-h.x(), h.y(), 0)};
-  if (!face.outward_plus_z) std::reverse(c_B.begin(), c_B.end());
-  std::array<Vec3, 4> c_W;
-  for (int k = 0; k < 4; ++k) c_W[k] = state.p_W[face.body] + state.R_WB[face.body] * c_B[k];
+// Corners of the mid-surface polygon, counter-clockwise seen from the outward side.
+std::vector<Vec3> corners_W(const Model& model, const State& state, const ChamberFace& face) {
+  const BodyDef& b = model.bodies[face.body];
+  std::vector<Vec3> c_W;
+  for (const Vec2& v : b.outline_B) {
+    c_W.push_back(state.p_W[face.body] + state.R_WB[face.body] * Vec3(v.x(), v.y(), 0));
+  }
+  if (!face.outward_plus_z) std::reverse(c_W.begin(), c_W.end());
   return c_W;
 }
 
@@ -83,7 +78,7 @@ double chamber_volume(const Model& model, const State& state, const std::vector<
   for (const ChamberFace& face : faces) {
     const Vec3 n = outward_normal_W(state, face);
     const Vec3& c = state.p_W[face.body];
-    const double A = face_area(model, face);
+    const double A = segment_area(model.bodies[face.body]);
     v += c.dot(n) * A / 3;
     // d(c . n) = dp . n + c . (dphi x n) = dp . n + dphi . (n x c).
     gradient.push_back({face.body, A / 3 * n, A / 3 * n.cross(c)});
@@ -98,10 +93,10 @@ void check_chamber_closed(const Model& model, const State& state,
   std::vector<Edge> edges;
   double longest = 0;
   for (std::size_t i = 0; i < faces.size(); ++i) {
-    const auto c = corners_W(model, state, faces[i]);
-    for (int k = 0; k < 4; ++k) {
-      edges.push_back({c[k], c[(k + 1) % 4], static_cast<int>(i)});
-      longest = std::max(longest, (c[(k + 1) % 4] - c[k]).norm());
+    const std::vector<Vec3> c = corners_W(model, state, faces[i]);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      edges.push_back({c[k], c[(k + 1) % c.size()], static_cast<int>(i)});
+      longest = std::max(longest, (c[(k + 1) % c.size()] - c[k]).norm());
     }
   }
   const double tol = rel_tol * longest;

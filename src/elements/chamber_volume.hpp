@@ -1,5 +1,5 @@
 // Volume enclosed by oriented segment faces (docs/pressure.md): the divergence theorem
-// over the bodies' mid-surface rectangles, V = 1/3 sum (c . n) A, exact for a closed
+// over the bodies' mid-surface polygons, V = 1/3 sum (c . n) A, exact for a closed
 // polyhedron, with its derivative with respect to each body's pose perturbation.
 #pragma once
 
@@ -11,7 +11,7 @@
 
 namespace finseg {
 
-/// One face of a chamber: the mid-surface rectangle of `body` with its outward normal
+/// One face of a chamber: the mid-surface polygon of `body` with its outward normal
 /// +z_B (outward_plus_z) or -z_B.
 struct ChamberFace {
   int body = -1;

@@ -32,8 +32,7 @@ double largest_pressure_force(const Model& model) {
   for (const PressureDef& def : model.pressures) {
     double p = def.pressure;
     for (double q : def.pressures) p = std::max(p, q);
-    for (int b : def.bodies)
-      f = std::max(f, p * model.bodies[b].size.x() * model.bodies[b].size.y());
+    for (int b : def.bodies) f = std::max(f, p * segment_area(model.bodies[b]));
   }
   return f;
 }
@@ -44,11 +43,10 @@ void add_pressure_loads(const Model& model, const State& state, Assembler& as) {
     if (p == 0) continue;
     const Vec3 n_B = pressure_direction_B(def.side);
     for (int b : def.bodies) {
-      const Vec3& size = model.bodies[b].size;
-      const Vec3 f_B = p * size.x() * size.y() * n_B;
+      const Vec3 f_B = p * segment_area(model.bodies[b]) * n_B;
       as.single(b, [&](const auto& A, auto& w) {
         using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
-        // Uniform pressure on a flat rectangle: the resultant acts at its centroid, which
+        // Uniform pressure on a flat polygon: the resultant acts at its centroid, which
         // is the body's centroid (mid-surface), so it has no moment about it.
         w.f_W += A.R_WB * f_B.cast<T>();
         return T(0);

@@ -1,5 +1,5 @@
 // Pressure loads (docs/pressure.md): a uniform pressure on a segment's mid-surface
-// rectangle as a follower force p A n_W at the centroid, n_W turning with the body.
+// polygon as a follower force p A n_W at the centroid, n_W turning with the body.
 #pragma once
 
 #include "core/types.hpp"

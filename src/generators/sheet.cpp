@@ -171,21 +171,22 @@ Model build_sheet_model(const SheetSpec& spec) {
   };
 
   auto body_id = [&](int r, int i) { return r * n_along + i; };
+  // Material centre of body (r, i): body frames are the material axes, origin at the centre.
+  auto centre = [&](int r, int i) {
+    return Vec2(0.5 * (bs[i] + bs[i + 1]), 0.5 * (r * bw + (r + 1) * bw));
+  };
   for (int r = 0; r < rows; ++r) {
     for (int i = 0; i < n_along; ++i) {
       BodyDef b;
-      b.s_min = bs[i];
-      b.s_max = bs[i + 1];
-      b.y_min = r * bw;
-      b.y_max = (r + 1) * bw;
-      b.panel = panel_of(0.5 * (b.s_min + b.s_max));
-      b.size = Vec3(b.s_max - b.s_min, bw, spec.thickness);
-      b.mass = spec.density * b.size.prod();
-      b.J_B = box_inertia(b.mass, b.size);
+      const Vec2 c_M = centre(r, i);
+      b.centroid_M = c_M;
+      b.panel = panel_of(c_M.x());
+      const double len = bs[i + 1] - bs[i];
+      set_prism(b, rectangle_outline(len, bw), spec.thickness,
+                spec.density * (len * bw * spec.thickness));
       b.R0_WB = R_panel[b.panel];
-      const Vec3 local(0.5 * (b.s_min + b.s_max) - panel_start[b.panel], 0.5 * (b.y_min + b.y_max),
-                       0);
-      b.p0_W = o_panel[b.panel] + R_panel[b.panel] * local;
+      b.p0_W =
+          o_panel[b.panel] + R_panel[b.panel] * Vec3(c_M.x() - panel_start[b.panel], c_M.y(), 0);
       b.fixed = (spec.clamp_start && i == 0) ||
                 std::find(spec.fixed_panels.begin(), spec.fixed_panels.end(), b.panel) !=
                     spec.fixed_panels.end();
@@ -195,9 +196,9 @@ Model build_sheet_model(const SheetSpec& spec) {
   }
 
   for (const FoldSpec& f : spec.folds) m.creases.push_back({f.law, f.angle});
-  auto centre = [&](int id) {
-    const BodyDef& b = m.bodies[id];
-    return Vec3(0.5 * (b.s_min + b.s_max), 0.5 * (b.y_min + b.y_max), 0);
+  auto lever = [&](const Vec2& P_M, int r, int i) {
+    const Vec2 c = P_M - centre(r, i);
+    return Vec3(c.x(), c.y(), 0);
   };
   // Along the length: joint i joins body i (outer, e-) to body i+1 (inner, e+).
   for (int r = 0; r < rows; ++r) {
@@ -206,9 +207,9 @@ Model build_sheet_model(const SheetSpec& spec) {
       ElementDef e;
       e.outer = body_id(r, i);
       e.inner = body_id(r, i + 1);
-      const Vec3 P(j.s, (r + 0.5) * bw, 0);
-      e.c_outer_B = P - centre(e.outer);
-      e.c_inner_B = P - centre(e.inner);
+      const Vec2 P(j.s, (r + 0.5) * bw);
+      e.c_outer_B = lever(P, r, i);
+      e.c_inner_B = lever(P, r, i + 1);
       e.K = joint_stiffness(spec, bw, j.h, bw / spec.width, false, rows);
       e.crease = j.fold;
       e.C = spec.damping_time * e.K;
@@ -224,12 +225,11 @@ Model build_sheet_model(const SheetSpec& spec) {
       ElementDef e;
       e.outer = body_id(r, i);
       e.inner = body_id(r + 1, i);
-      const BodyDef& b = m.bodies[e.outer];
-      const Vec3 P(0.5 * (b.s_min + b.s_max), (r + 1) * bw, 0);
-      e.c_outer_B = P - centre(e.outer);
-      e.c_inner_B = P - centre(e.inner);
+      const Vec2 P(centre(r, i).x(), (r + 1) * bw);
+      e.c_outer_B = lever(P, r, i);
+      e.c_inner_B = lever(P, r + 1, i);
       e.R_inner_E = e.R_outer_F = R_across;
-      e.K = joint_stiffness(spec, b.size.x(), bw, 1.0, true, rows);
+      e.K = joint_stiffness(spec, bs[i + 1] - bs[i], bw, 1.0, true, rows);
       e.C = spec.damping_time * e.K;
       e.name = fmt::format("across_r{}_s{}", r, i);
       m.elements.push_back(e);
@@ -241,11 +241,12 @@ Model build_sheet_model(const SheetSpec& spec) {
 
 MaterialPoint locate_material_point(const Model& model, double s, double y) {
   const double tol = 1e-12 * std::max(1.0, model.sheet.length);
+  const Vec2 p_M(s, y);
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const BodyDef& b = model.bodies[i];
-    if (s >= b.s_min - tol && s <= b.s_max + tol && y >= b.y_min - tol && y <= b.y_max + tol) {
-      return {static_cast<int>(i),
-              Vec3(s - 0.5 * (b.s_min + b.s_max), y - 0.5 * (b.y_min + b.y_max), 0)};
+    if (b.centroid_M && polygon_contains(material_outline(b), p_M, tol)) {
+      const Vec2 r = p_M - *b.centroid_M;
+      return {static_cast<int>(i), Vec3(r.x(), r.y(), 0)};
     }
   }
   throw InputError(model.source, "at",

@@ -54,7 +54,7 @@ struct ContactDef {
   /// Lists of panels that may touch each other; empty: every panel with every panel.
   std::vector<std::vector<int>> groups;
   double margin = 0;  ///< extra broad-phase box growth, m, >= 0
-  /// Sample points per plate edge of the narrow phase (a grid of n x n points), 2..16.
+  /// Sample points per plate side of the narrow phase (n x n on a rectangle), 2..16.
   int samples_per_edge = 3;
 };
 

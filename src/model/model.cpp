@@ -36,9 +36,25 @@ bool has_drive_path(const Model& m) {
   return !m.drives.empty() && m.drives[0].travel > 0 && m.drives[0].step > 0;
 }
 
-Mat3 box_inertia(double mass, const Vec3& size) {
-  const Vec3 s2 = size.cwiseProduct(size);
-  return (mass / 12.0) * Vec3(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y()).asDiagonal();
+Vec2 set_prism(BodyDef& b, const Outline& outline_B, double thickness, double mass) {
+  const Vec2 c = polygon_centroid(outline_B);
+  b.outline_B = translated(outline_B, -c);
+  b.thickness = thickness;
+  b.mass = mass;
+  b.J_B = prism_inertia(b.outline_B, thickness, mass);
+  return c;
+}
+
+void set_box(BodyDef& b, const Vec3& size, double mass) {
+  set_prism(b, rectangle_outline(size.x(), size.y()), size.z(), mass);
+}
+
+double segment_area(const BodyDef& b) {
+  return polygon_area(b.outline_B);
+}
+
+Outline material_outline(const BodyDef& b) {
+  return translated(b.outline_B, b.centroid_M.value());
 }
 
 namespace {
@@ -64,8 +80,19 @@ void validate(const Model& m) {
     if (!(b.mass > 0) || !std::isfinite(b.mass)) {
       throw InputError(m.source, f + ".mass", fmt::format("{} kg; must be > 0", b.mass));
     }
-    if (!(b.size.minCoeff() > 0) || !finite(b.size)) {
-      throw InputError(m.source, f + ".size", "box edge lengths must be finite and > 0 m");
+    if (!(b.thickness > 0) || !std::isfinite(b.thickness)) {
+      throw InputError(m.source, f + ".thickness", fmt::format("{} m; must be > 0", b.thickness));
+    }
+    if (b.outline_B.size() > kMaxOutlineVertices) {
+      throw InputError(m.source, f + ".outline",
+                       fmt::format("{} vertices; a segment has at most {}", b.outline_B.size(),
+                                   kMaxOutlineVertices));
+    }
+    const double r = outline_radius(b.outline_B);
+    const std::string shape = convexity_problem(b.outline_B, 1e-9 * r);
+    if (!shape.empty()) throw InputError(m.source, f + ".outline", "the polygon " + shape);
+    if (polygon_centroid(b.outline_B).norm() > 1e-9 * r) {
+      throw InputError(m.source, f + ".outline", "the polygon's centroid must be B's origin");
     }
     if (!finite(b.J_B) || !(b.J_B.diagonal().minCoeff() > 0)) {
       throw InputError(m.source, f + ".inertia", "must be finite with positive diagonal");

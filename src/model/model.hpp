@@ -2,6 +2,7 @@
 // Immutable once built, plain arrays like MuJoCo's mjModel. Where it is now lives in State.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,22 +10,26 @@
 #include "model/contact_def.hpp"
 #include "model/crease_def.hpp"
 #include "model/pressure_def.hpp"
+#include "model/segment_shape.hpp"
 
 namespace finseg {
 
-/// A rigid segment: a thin box cut from the sheet. Body frame B: origin at the centroid,
-/// x along the sheet's length, y across, z along the normal.
+/// A rigid segment: a convex polygon of the sheet with the sheet's thickness (a prism).
+/// Body frame B: origin at the centroid, z along the normal; x and y are the sheet's
+/// material axes when the body was cut from a sheet (along the length and across for a strip).
 struct BodyDef {
   std::string name;
   double mass = 0;                ///< kg
   Mat3 J_B = Mat3::Zero();        ///< inertia about the centroid in frame B, kg m^2
-  Vec3 size = Vec3::Zero();       ///< box edge lengths along B's x, y, z (z = thickness), m
+  Outline outline_B;              ///< mid-surface polygon in B (z = 0), convex, counter-clockwise
+                                  ///< about +z_B, centroid at the origin, m
+  double thickness = 0;           ///< m
   Vec3 p0_W = Vec3::Zero();       ///< initial centroid position, m
   Mat3 R0_WB = Mat3::Identity();  ///< initial orientation
   bool fixed = false;             ///< clamped by a fixture: never moves
-  // Rectangle this body covers on the flat (unfolded) sheet, material coordinates in m:
-  // s along the length, y across. The centroid sits at the rectangle's centre.
-  double s_min = 0, s_max = 0, y_min = 0, y_max = 0;
+  /// Centroid on the flat (unfolded) sheet, material coordinates in m, when the body was cut
+  /// from a sheet: its outline there is centroid_M + outline_B (contact rules, probes).
+  std::optional<Vec2> centroid_M;
   int panel = 0;  ///< fold panel (part of the sheet between two creases), 0-based
 };
 
@@ -126,8 +131,19 @@ int panel_count(const Model& m);
 /// pull (one equilibrium per step) after its load stepping.
 bool has_drive_path(const Model& m);
 
-/// Mass and centroidal inertia of a box of edge lengths `size` and total mass `mass`.
-Mat3 box_inertia(double mass, const Vec3& size);
+/// Gives `b` the prism of cross-section `outline_B` (any position: it is moved so that its
+/// centroid is B's origin) and `thickness` (m), with mass `mass` (kg) and its exact inertia.
+/// Returns the centroid of the given outline, m (where B's origin lies in its coordinates).
+Vec2 set_prism(BodyDef& b, const Outline& outline_B, double thickness, double mass);
+
+/// set_prism for a box: rectangle size.x() by size.y(), thickness size.z() (m).
+void set_box(BodyDef& b, const Vec3& size, double mass);
+
+/// Area of a segment's mid-surface polygon, m^2.
+double segment_area(const BodyDef& b);
+
+/// A segment's polygon on the flat sheet (material coordinates, m); requires centroid_M.
+Outline material_outline(const BodyDef& b);
 
 /// Checks sizes, indices and finiteness; throws InputError naming model.source.
 void validate(const Model& model);

@@ -13,7 +13,7 @@ enum class PressureSide { PlusZ, MinusZ };
 /// What a pressure table is indexed by.
 enum class PressureVersus { Time, LoadScale };
 
-/// A uniform pressure on the mid-surface rectangles (size.x x size.y) of some bodies, as a
+/// A uniform pressure on the mid-surface polygons of some bodies, as a
 /// follower load. Constant: p = load_scale * pressure. Table: p interpolated linearly in
 /// (at, pressure), held at the end values outside it, not scaled by the load scale.
 struct PressureDef {

@@ -11,13 +11,6 @@
 
 namespace finseg {
 
-using Vec2 = Eigen::Vector2d;
-
-/// z component of the cross product of two flat vectors (> 0: b turns left of a).
-inline double cross2d(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 /// FOLD's edges_assignment letters.
 enum class EdgeAssignment : char {
   Mountain = 'M',

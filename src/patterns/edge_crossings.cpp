@@ -5,17 +5,11 @@
 #include <cmath>
 #include <utility>
 
+#include "model/segment_shape.hpp"
 #include "patterns/pattern_checks.hpp"
 
 namespace finseg {
 namespace {
-
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
 
 bool edges_meet(const std::vector<Vec2>& xy, const PatternEdge& e1, const PatternEdge& e2,
                 double touch) {
@@ -29,11 +23,7 @@ bool edges_meet(const std::vector<Vec2>& xy, const PatternEdge& e1, const Patter
            point_segment_distance(xy[q], xy[v], xy[p]) <= touch;
   }
   const Vec2 &A = xy[a], &B = xy[b], &C = xy[c], &D = xy[d];
-  const double o1 = cross2d(B - A, C - A), o2 = cross2d(B - A, D - A);
-  const double o3 = cross2d(D - C, A - C), o4 = cross2d(D - C, B - C);
-  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) {
-    return true;
-  }
+  if (segments_cross(A, B, C, D)) return true;
   return std::min({point_segment_distance(A, C, D), point_segment_distance(B, C, D),
                    point_segment_distance(C, A, B), point_segment_distance(D, A, B)}) <= touch;
 }

@@ -95,13 +95,13 @@ std::string most_strained_element(const Model& model, const State& state) {
     const Vec3 Pp = state.p_W[e.inner] + state.R_WB[e.inner] * e.c_inner_B;
     const Vec3 Pm = state.p_W[e.outer] + state.R_WB[e.outer] * e.c_outer_B;
     const Vec3 z = R_WF.transpose() * (Pp - Pm) - e.z0_F;
-    const double scale = model.bodies[e.inner].size.x();
+    const double scale = 2 * outline_radius(model.bodies[e.inner].outline_B);
     const double strain = z.norm() / scale;
     if (!(strain <= worst)) {
       worst = strain;
       text = fmt::format(
           "element {} ('{}', bodies {} and {}): separation {:.3g} m ({:.3g} of the "
-          "segment length)",
+          "segment diameter)",
           k, e.name, e.inner, e.outer, z.norm(), strain);
       if (!std::isfinite(strain)) break;
     }

@@ -164,7 +164,7 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
 bool tunnelled(const Model& model, const State& state) {
   if (!model.contact.enabled) return false;
   for (const ContactPairForce& p : contact_summary(model, state).pairs) {
-    const double thinner = std::min(model.bodies[p.a].size.z(), model.bodies[p.b].size.z());
+    const double thinner = std::min(model.bodies[p.a].thickness, model.bodies[p.b].thickness);
     if (p.max_penetration > 0.5 * thinner) return true;
   }
   return false;

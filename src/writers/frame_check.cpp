@@ -9,10 +9,11 @@ namespace finseg {
 void check_frames(const Model& model, const std::vector<Frame>& frames) {
   const std::size_t n = model.bodies.size();
   for (std::size_t b = 0; b < n; ++b) {
-    const Vec3& s = model.bodies[b].size;
-    if (!s.allFinite() || (s.array() <= 0).any()) {
-      throw InputError(model.source, "bodies[" + std::to_string(b) + "].size",
-                       "box edge lengths must be finite and > 0 m");
+    const BodyDef& body = model.bodies[b];
+    const std::string shape = convexity_problem(body.outline_B, 0);
+    if (!shape.empty() || !(body.thickness > 0) || !std::isfinite(body.thickness)) {
+      throw InputError(model.source, "bodies[" + std::to_string(b) + "].outline",
+                       "must be a convex polygon with a finite thickness > 0 m");
     }
   }
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -38,18 +39,6 @@ void check_frames(const Model& model, const std::vector<Frame>& frames) {
       }
     }
   }
-}
-
-std::vector<Vec3> box_corners_W(const Vec3& size, const Vec3& p_W, const Mat3& R_WB) {
-  const Vec3 h = 0.5 * size;
-  static constexpr int kSign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-  std::vector<Vec3> corners(8);
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 c_B(kSign[c][0] * h.x(), kSign[c][1] * h.y(), kSign[c][2] * h.z());
-    corners[c] = p_W + R_WB * c_B;
-  }
-  return corners;
 }
 
 }  // namespace finseg

@@ -96,7 +96,9 @@ std::string data_json(const std::string& title, const FrameAxis& axis, const Mod
   const std::size_t n = model.bodies.size();
   // Positions are rounded to 1e-5 of the scene's extent (1e-6 m at the least).
   double extent = 0;
-  for (const BodyDef& b : model.bodies) extent = std::max(extent, b.size.norm());
+  for (const BodyDef& b : model.bodies) {
+    extent = std::max(extent, std::hypot(2 * outline_radius(b.outline_B), b.thickness));
+  }
   if (n > 0) {
     Vec3 lo = frames[0].p_W[0], hi = lo;
     for (const Frame& f : frames) {
@@ -114,12 +116,22 @@ std::string data_json(const std::string& title, const FrameAxis& axis, const Mod
   j += json_string(title);
   j += ",\"timeLabel\":";
   j += json_string(axis.label);
-  j += ",\"lengthUnit\":\"m\",\"bodies\":{\"size\":[";
+  j += ",\"lengthUnit\":\"m\",\"bodies\":{\"outline\":[";
   for (std::size_t b = 0; b < n; ++b) {
-    for (int k = 0; k < 3; ++k) {
-      if (b || k) j += ',';
-      put_general(j, model.bodies[b].size[k], 6);
+    j += b ? ",[" : "[";
+    const Outline& o = model.bodies[b].outline_B;
+    for (std::size_t k = 0; k < o.size(); ++k) {
+      if (k) j += ',';
+      put_general(j, o[k].x(), 6);
+      j += ',';
+      put_general(j, o[k].y(), 6);
     }
+    j += ']';
+  }
+  j += "],\"thickness\":[";
+  for (std::size_t b = 0; b < n; ++b) {
+    if (b) j += ',';
+    put_general(j, model.bodies[b].thickness, 6);
   }
   j += "],\"panel\":[";
   for (std::size_t b = 0; b < n; ++b) {

@@ -1,4 +1,5 @@
-// VTK XML output: one .vtu per frame with a hexahedron per segment box, a .pvd collection
+// VTK XML output: one .vtu per frame with a prism cell per segment (wedge, hexahedron,
+// pentagonal or hexagonal prism, convex point set beyond), a .pvd collection
 // with the frame times, the same pair for contact points when there are any, and mode
 // shapes. Arrays are binary, zlib-compressed, appended (writers/vtk_appended.hpp).
 #include "writers/vtk.hpp"
@@ -19,7 +20,35 @@ namespace finseg {
 namespace {
 
 constexpr std::uint8_t kVtkVertex = 1;
+constexpr std::uint8_t kVtkWedge = 13;
 constexpr std::uint8_t kVtkHexahedron = 12;
+constexpr std::uint8_t kVtkPentagonalPrism = 15;
+constexpr std::uint8_t kVtkHexagonalPrism = 16;
+constexpr std::uint8_t kVtkConvexPointSet = 41;
+
+// VTK cell type of a prism over a polygon of n sides.
+std::uint8_t prism_cell_type(std::size_t n) {
+  switch (n) {
+    case 3:
+      return kVtkWedge;
+    case 4:
+      return kVtkHexahedron;
+    case 5:
+      return kVtkPentagonalPrism;
+    case 6:
+      return kVtkHexagonalPrism;
+    default:
+      return kVtkConvexPointSet;
+  }
+}
+
+// Corners of body b's prism in VTK's node order: its wedge's first triangle faces away from
+// the second (clockwise seen from +z), the other prisms' first face towards the second.
+std::vector<Vec3> cell_corners_W(const BodyDef& body, const Vec3& p_W, const Mat3& R_WB) {
+  Outline o = body.outline_B;
+  if (o.size() == 3) std::swap(o[1], o[2]);
+  return prism_corners_W(o, body.thickness, p_W, R_WB);
+}
 
 const char* kUnitsComment =
     "<!-- finseg: SI units (m, m/s, N, N m, Pa; angles in deg as named); timestep = Frame::t, "
@@ -38,13 +67,14 @@ struct PieceData {
   std::string point_data, cell_data;
 };
 
-std::string vtu(const std::vector<Vec3>& points, std::size_t cells, int nodes_per_cell,
-                std::uint8_t type, const PieceData& data, VtkAppended& app) {
-  std::vector<std::int64_t> conn(cells * nodes_per_cell), offsets(cells);
+// Cells take consecutive points: cell c has sizes[c] of them and VTK type types[c].
+std::string vtu(const std::vector<Vec3>& points, const std::vector<std::int64_t>& sizes,
+                const std::vector<std::uint8_t>& types, const PieceData& data, VtkAppended& app) {
+  const std::size_t cells = sizes.size();
+  std::vector<std::int64_t> conn(points.size()), offsets(cells);
   for (std::size_t k = 0; k < conn.size(); ++k) conn[k] = static_cast<std::int64_t>(k);
-  for (std::size_t c = 0; c < cells; ++c)
-    offsets[c] = static_cast<std::int64_t>((c + 1) * nodes_per_cell);
-  const std::vector<std::uint8_t> types(cells, type);
+  std::int64_t end = 0;
+  for (std::size_t c = 0; c < cells; ++c) offsets[c] = end += sizes[c];
   std::string out = fmt::format(
       "<?xml version=\"1.0\"?>\n{}"
       "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
@@ -82,8 +112,7 @@ std::string segment_arrays(const Model& model, const SegmentFields& s, VtkAppend
          app.array("Float64", "contact_normal_N", 1, s.contact_normal) +
          app.array("Float64", "contact_friction_N", 1, s.contact_friction);
   out += app.array("Float64", "contact_pressure_Pa", 1, per_body(n, [&](std::size_t i) {
-                     const Vec3& a = model.bodies[i].size;
-                     return s.contact_normal[i] / (a.x() * a.y());
+                     return s.contact_normal[i] / segment_area(model.bodies[i]);
                    }));
   return out;
 }
@@ -91,12 +120,15 @@ std::string segment_arrays(const Model& model, const SegmentFields& s, VtkAppend
 std::string bodies_vtu(const Model& model, const Frame& frame, const ModeShape* mode) {
   const std::size_t n = model.bodies.size();
   std::vector<Vec3> points, displacement, velocity, shape;
-  points.reserve(8 * n);
+  std::vector<std::int64_t> sizes(n);
+  std::vector<std::uint8_t> types(n);
   for (std::size_t b = 0; b < n; ++b) {
     const BodyDef& body = model.bodies[b];
-    const std::vector<Vec3> now = box_corners_W(body.size, frame.p_W[b], frame.R_WB[b]);
-    const std::vector<Vec3> start = box_corners_W(body.size, body.p0_W, body.R0_WB);
-    for (int c = 0; c < 8; ++c) {
+    const std::vector<Vec3> now = cell_corners_W(body, frame.p_W[b], frame.R_WB[b]);
+    const std::vector<Vec3> start = cell_corners_W(body, body.p0_W, body.R0_WB);
+    sizes[b] = static_cast<std::int64_t>(now.size());
+    types[b] = prism_cell_type(body.outline_B.size());
+    for (std::size_t c = 0; c < now.size(); ++c) {
       points.push_back(now[c]);
       displacement.push_back(now[c] - start[c]);
       const Vec3 r = now[c] - frame.p_W[b];
@@ -118,7 +150,7 @@ std::string bodies_vtu(const Model& model, const Frame& frame, const ModeShape* 
   d.cell_data = app.array("Int32", "body", 1, body) + app.array("Int32", "panel", 1, panel) +
                 app.array("Int32", "fixed", 1, fixed);
   if (!frame.segments.force_W.empty()) d.cell_data += segment_arrays(model, frame.segments, app);
-  return vtu(points, n, 8, kVtkHexahedron, d, app);
+  return vtu(points, sizes, types, d, app);
 }
 
 std::string contacts_vtu(const Frame& frame) {
@@ -130,7 +162,8 @@ std::string contacts_vtu(const Frame& frame) {
                    app.array("Float64", "friction_force_N", 1, frame.contact_friction);
   }
   const std::vector<Vec3>& pts = frame.contact_points_W;
-  return vtu(pts, pts.size(), 1, kVtkVertex, d, app);
+  return vtu(pts, std::vector<std::int64_t>(pts.size(), 1),
+             std::vector<std::uint8_t>(pts.size(), kVtkVertex), d, app);
 }
 
 std::string pvd(const std::vector<double>& times, const std::vector<std::string>& files) {
@@ -215,7 +248,9 @@ ModeShape mode_shape(const Model& model, const State& state, const Mode& mode) {
     if (d < 0) continue;
     m.dp_W[b] = mode.shape.segment<3>(d);
     m.dphi_W[b] = mode.shape.segment<3>(d + 3);
-    for (const Vec3& c : box_corners_W(model.bodies[b].size, state.p_W[b], state.R_WB[b])) {
+    const BodyDef& body = model.bodies[b];
+    for (const Vec3& c :
+         prism_corners_W(body.outline_B, body.thickness, state.p_W[b], state.R_WB[b])) {
       const Vec3 u = m.dp_W[b] + m.dphi_W[b].cross(c - state.p_W[b]);
       if (u.norm() > largest) {
         largest = u.norm();

@@ -179,11 +179,13 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   view.insertBefore(renderer.domElement, view.firstChild);
 
   var scene = new THREE.Scene();
-  // Bounds over all frames: centroids padded by the largest box half-diagonal.
-  var maxHalf = 0, i, k;
+  // Bounds over all frames: centroids padded by the largest segment's half-diagonal.
+  var maxHalf = 0, i, k, v;
   for (i = 0; i < B; ++i) {
-    var s = D.bodies.size;
-    maxHalf = Math.max(maxHalf, 0.5 * Math.hypot(s[3 * i], s[3 * i + 1], s[3 * i + 2]));
+    var ol = D.bodies.outline[i];
+    for (v = 0; v < ol.length; v += 2) {
+      maxHalf = Math.max(maxHalf, Math.hypot(ol[v], ol[v + 1], 0.5 * D.bodies.thickness[i]));
+    }
   }
   var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
   for (var f = 0; f < N; ++f) {
@@ -241,10 +243,15 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
 
   var meshes = [], panelsSeen = {}, anyFixed = false;
   for (i = 0; i < B; ++i) {
-    var sz = D.bodies.size, fixed = D.bodies.fixed[i] === 1, panel = D.bodies.panel[i];
+    var fixed = D.bodies.fixed[i] === 1, panel = D.bodies.panel[i];
     var colour = new THREE.Color(fixed ? FIXED : PALETTE[((panel % PALETTE.length) + PALETTE.length) % PALETTE.length]);
     if (fixed) anyFixed = true; else panelsSeen[panel] = true;
-    var geo = new THREE.BoxBufferGeometry(sz[3 * i], sz[3 * i + 1], sz[3 * i + 2]);
+    // The segment's prism: its mid-surface polygon extruded through the thickness.
+    var outline = D.bodies.outline[i], th = D.bodies.thickness[i], corners = [];
+    for (v = 0; v < outline.length; v += 2) corners.push(new THREE.Vector2(outline[v], outline[v + 1]));
+    var geo = new THREE.ExtrudeBufferGeometry(new THREE.Shape(corners),
+                                              { depth: th, bevelEnabled: false });
+    geo.translate(0, 0, -0.5 * th);
     var mesh = new THREE.Mesh(geo, new THREE.MeshStandardMaterial({
       color: colour, roughness: 0.62, metalness: 0.0,
       polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
