@@ -16,8 +16,9 @@
 namespace finseg {
 
 /// Builds the structure from material, sheet, discretisation, stiffness, fixtures, gravity,
-/// contact and zigzag. Sets `zigzag` when the zigzag generator built it.
-Model read_structure(const Fields& root, bool& zigzag);
+/// contact and zigzag or pattern. Sets `zigzag` when the zigzag generator built it and
+/// `pattern_file` (the path opened) when a crease pattern did.
+Model read_structure(const Fields& root, bool& zigzag, std::string& pattern_file);
 
 /// Appends fixtures by body name, loads, drives and probes (replacing generator probes
 /// when `probes:` is given).

@@ -47,13 +47,13 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
   const Fields root(
       root_node, {file, ""},
       {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
-       "drives", "probes", "contact", "zigzag", "solver", "outputs", "pressures"});
+       "drives", "probes", "contact", "zigzag", "pattern", "solver", "outputs", "pressures"});
   Scene scene;
   scene.file = file;
   scene.overrides = overrides;
   try {
     scene.title = root.word("title", "");
-    scene.model = read_structure(root, scene.zigzag);
+    scene.model = read_structure(root, scene.zigzag, scene.pattern_file);
     read_attachments(root, scene.zigzag, scene.model);
     read_pressures(root, scene.model);
     scene.solver = read_solver_section(root);

@@ -30,9 +30,10 @@ struct OutputSettings {
 
 /// A scene read from a file: the model and how to run it.
 struct Scene {
-  std::string file;     ///< path it was read from
-  std::string title;    ///< optional `title:`
-  bool zigzag = false;  ///< built by the zigzag generator (`zigzag:` section)
+  std::string file;          ///< path it was read from
+  std::string title;         ///< optional `title:`
+  bool zigzag = false;       ///< built by the zigzag generator (`zigzag:` section)
+  std::string pattern_file;  ///< FOLD file the structure was cut from (`pattern:`), if any
   Model model;
   SolverSettings solver;
   OutputSettings outputs;

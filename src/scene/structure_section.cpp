@@ -1,12 +1,16 @@
-// Material, sheet, discretisation, stiffness, fixtures (panels), gravity, contact and the
-// zigzag generator's section of a scene file (docs/scene.md).
+// Material, sheet, discretisation, stiffness, fixtures (panels), gravity, contact, the
+// zigzag generator's section and the crease pattern section of a scene file (docs/scene.md).
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <map>
+#include <optional>
 
 #include "core/so3.hpp"
+#include "generators/pattern_sheet.hpp"
 #include "generators/sheet.hpp"
 #include "generators/zigzag.hpp"
+#include "patterns/fold_format.hpp"
 #include "scene/scene_parts.hpp"
 
 namespace finseg {
@@ -219,6 +223,77 @@ Model read_zigzag(const Fields& root, const Fields& sheet, const SheetSpec& base
   return m;
 }
 
+// Length of one unit of a unitless FOLD file: a unit name (mm, ...) or metres per unit.
+std::optional<double> read_fold_unit(const Fields& p) {
+  if (!p.has("unit")) return std::nullopt;
+  const YAML::Node u = p.node("unit");
+  if (u.IsScalar()) {
+    if (const auto named = metres_per_fold_unit(u.Scalar()); named && u.Scalar() != "unit") {
+      return named;
+    }
+  }
+  return p.number("unit", positive("m per unit, or m, cm, mm, um, nm, in, pt"));
+}
+
+// Model of a sheet cut from a FOLD crease pattern (generators/pattern_sheet.hpp).
+Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpec& base,
+                         std::string& pattern_file) {
+  for (const char* key : {"length", "width", "folds", "pitch_deg"}) {
+    if (sheet.has(key)) sheet.fail(key, "not available with a pattern: the pattern gives it");
+  }
+  if (root.has("discretisation")) {
+    root.fail("discretisation", "not available with a pattern: use pattern.subdivisions");
+  }
+  if (root.has("stiffness")) root.fail("stiffness", "not available with a pattern");
+  const Fields p(
+      root.node("pattern"), root.context("pattern"),
+      {"file", "unit", "subdivisions", "start", "crease_law_length", "mountain_law", "valley_law"});
+  std::filesystem::path path = p.required_word("file");
+  if (path.is_relative()) path = std::filesystem::path(root.context().file).parent_path() / path;
+  pattern_file = path.string();
+  const CreasePattern pattern = read_fold(pattern_file, read_fold_unit(p));
+  PatternSheetSpec s;
+  s.thickness = sheet.number("thickness", kThicknessRange);
+  s.youngs_modulus = base.youngs_modulus;
+  s.poisson_ratio = base.poisson_ratio;
+  s.density = base.density;
+  s.damping_time = base.damping_time;
+  s.subdivisions = p.integer("subdivisions", 2, 1, 64);
+  const std::string start = p.word("start", "folded");
+  if (start != "folded" && start != "flat")
+    p.fail("start", "'" + start + "'; allowed: folded, flat");
+  s.start_folded = start == "folded";
+  s.crease_law_length = p.number("crease_law_length", 1.0, positive("m"));
+  if (p.has("mountain_law")) {
+    s.mountain_law = read_crease_law(p.node("mountain_law"), p.context("mountain_law"));
+  }
+  if (p.has("valley_law")) {
+    s.valley_law = read_crease_law(p.node("valley_law"), p.context("valley_law"));
+  }
+  s.origin_W = sheet.vector3("origin", Vec3::Zero(), "m");
+  const Fields fix = fixtures_of(root);
+  if (fix.has("clamp_start")) fix.fail("clamp_start", "not available with a pattern: use panels");
+  for (int f : fix.integers("panels", 1, 1000000)) s.fixed_faces.push_back(f - 1);
+  check_model_memory(static_cast<double>(pattern.faces.size()) * s.subdivisions, s.subdivisions,
+                     root.context().file, "pattern faces x subdivisions^2");
+  Model m;
+  in_scene_file(
+      root.context().file, [&] { m = build_pattern_model(pattern, s); },
+      [&](const std::string& api) {
+        if (api.rfind("edges_assignment", 0) == 0) {
+          return "pattern.mountain_law / valley_law (" + pattern_file + " " + api + ")";
+        }
+        if (api == "fixtures.fixed_faces") return std::string("fixtures.panels");
+        if (api == "discretisation.subdivisions") return std::string("pattern.subdivisions");
+        if (api == "creases.law_length") return std::string("pattern.crease_law_length");
+        return api;
+      });
+  m.gravity_W = root.vector3("gravity", Vec3::Zero(), "m/s^2");
+  if (root.has("contact"))
+    m.contact = read_contact_section(root.node("contact"), root.context("contact"), panel_count(m));
+  return m;
+}
+
 }  // namespace
 
 void in_scene_file(const std::string& file, const std::function<void()>& build,
@@ -234,16 +309,22 @@ void in_scene_file(const std::string& file, const std::function<void()>& build,
   }
 }
 
-Model read_structure(const Fields& root, bool& zigzag) {
+Model read_structure(const Fields& root, bool& zigzag, std::string& pattern_file) {
   zigzag = root.has("zigzag");
+  if (zigzag && root.has("pattern")) root.fail("pattern", "give either zigzag: or pattern:");
   SheetSpec base;
   read_material(root, base);
-  read_discretisation(root, base, zigzag);
-  read_stiffness(root, base.overrides);
   if (!root.has("sheet")) root.fail("sheet", "required section (length, width, thickness)");
   const Fields sheet(root.node("sheet"), root.context("sheet"),
                      {"length", "width", "thickness", "origin", "pitch_deg", "folds"});
-  Model m = zigzag ? read_zigzag(root, sheet, base) : read_general_sheet(root, sheet, base);
+  Model m;
+  if (root.has("pattern")) {
+    m = read_pattern_sheet(root, sheet, base, pattern_file);
+  } else {
+    read_discretisation(root, base, zigzag);
+    read_stiffness(root, base.overrides);
+    m = zigzag ? read_zigzag(root, sheet, base) : read_general_sheet(root, sheet, base);
+  }
   m.source = root.context().file;
   return m;
 }

@@ -58,6 +58,7 @@ nlohmann::json hashed(const std::string& file) {
 
 std::vector<std::string> scene_data_files(const Scene& scene) {
   std::vector<std::string> files;
+  if (!scene.pattern_file.empty()) files.push_back(scene.pattern_file);
   for (const CreaseDef& c : scene.model.creases) {
     if (!c.law) continue;
     for (const std::string& f : c.law->data_files()) {

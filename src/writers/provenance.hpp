@@ -18,7 +18,8 @@ std::string sha256_file(const std::string& path);
 /// Current time in UTC, ISO 8601 to the second, e.g. "2026-11-23T21:30:00Z".
 std::string utc_now_iso8601();
 
-/// The data files a scene's model read (the crease-law CSVs), each once, in model order.
+/// The data files a scene's model read (its FOLD pattern, then the crease-law CSVs), each
+/// once, in model order.
 std::vector<std::string> scene_data_files(const Scene& scene);
 
 /// {finseg_version, git_revision, date_utc, scene: {file, sha256}, data_files: [{file,

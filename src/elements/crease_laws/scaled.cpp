@@ -1,0 +1,29 @@
+#include "elements/crease_laws/scaled.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+
+namespace finseg {
+
+ScaledCreaseLaw::ScaledCreaseLaw(std::shared_ptr<const CreaseLaw> law, double share)
+    : law_(std::move(law)), share_(share) {}
+
+MomentSample ScaledCreaseLaw::evaluate(double phi, const ElementHistory& history, double t) const {
+  const MomentSample m = law_->evaluate(phi, history, t);
+  return {share_ * m.moment, share_ * m.stiffness};
+}
+
+double ScaledCreaseLaw::rest_angle(const ElementHistory& history, double t) const {
+  return law_->rest_angle(history, t);
+}
+
+double ScaledCreaseLaw::energy(double phi, const ElementHistory& history, double t) const {
+  return share_ * law_->energy(phi, history, t);
+}
+
+std::string ScaledCreaseLaw::describe() const {
+  return fmt::format("{:.6g} x {}", share_, law_->describe());
+}
+
+}  // namespace finseg

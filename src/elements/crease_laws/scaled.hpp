@@ -1,0 +1,30 @@
+// A crease law carried by part of a crease: the moment of another law times a share (e.g.
+// the length of one segment side over the crease length the law was identified for).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "elements/crease_law.hpp"
+
+namespace finseg {
+
+class ScaledCreaseLaw final : public CreaseLaw {
+ public:
+  /// `share` > 0 multiplies moment, stiffness and energy; angles and history are the law's.
+  ScaledCreaseLaw(std::shared_ptr<const CreaseLaw> law, double share);
+  MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
+  double rest_angle(const ElementHistory& history, double t) const override;
+  double energy(double phi, const ElementHistory& history, double t) const override;
+  OpeningRule opening_rule() const override { return law_->opening_rule(); }
+  bool direction_relative() const override { return law_->direction_relative(); }
+  std::vector<std::string> data_files() const override { return law_->data_files(); }
+  std::string describe() const override;
+
+ private:
+  std::shared_ptr<const CreaseLaw> law_;
+  double share_;
+};
+
+}  // namespace finseg

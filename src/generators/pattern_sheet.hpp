@@ -1,0 +1,44 @@
+// A sheet cut from a crease pattern (docs/stiffness.md, "Sheets from crease patterns"): every
+// face divided into cells (patterns/segment_mesh.hpp), one polygonal segment per cell, one
+// force element on every side two cells share, its frame aligned with that side. A side on
+// a mountain or valley crease carries the crease law; every other side the plate's joint
+// stiffness.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "model/model.hpp"
+#include "patterns/crease_pattern.hpp"
+
+namespace finseg {
+
+class CreaseLaw;
+
+/// Material, discretisation and creases of a sheet cut from a pattern. SI units.
+struct PatternSheetSpec {
+  double thickness = 1e-4, youngs_modulus = 3e9, poisson_ratio = 0.3, density = 800;
+  int subdivisions = 1;  ///< each face into n x n cells, 1..64
+  /// Crease laws by assignment (M, V; F and U creases use them by the sign of their fold
+  /// angle when given, else they are plate joints). Each law's moment is for a crease of
+  /// `crease_law_length` (m); a cell side of length l carries the share l / that length.
+  std::shared_ptr<const CreaseLaw> mountain_law, valley_law;
+  double crease_law_length = 1.0;
+  std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
+  bool start_folded = true;      ///< start from the pattern's folded coordinates if any
+  double damping_time = 0;       ///< stiffness-proportional damping C = damping_time K, s
+  Vec3 origin_W = Vec3::Zero();  ///< world position of the pattern's origin, m
+  Mat3 R_W0 = Mat3::Identity();  ///< orientation of the flat pattern's axes
+};
+
+/// Builds bodies, elements and initial poses from a validated pattern (validate_pattern).
+/// Throws InputError (naming `source`) on an impossible spec or a crease without a law.
+Model build_pattern_model(const CreasePattern& pattern, const PatternSheetSpec& spec,
+                          const std::string& source = "<api>");
+
+/// Stiffness of a plate joint (docs/stiffness.md): a side of length l (m) between cells
+/// whose centroids lie h (m) apart across it: T1..T3 (N/m), theta1..3 (N m/rad) in the
+/// side's frame (x across the side, y along it, z the normal).
+Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h);
+
+}  // namespace finseg
