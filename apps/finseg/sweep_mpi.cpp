@@ -1,7 +1,5 @@
 #include "apps/finseg/sweep_mpi.hpp"
 
-// The C API only: Open MPI's deprecated C++ bindings do not build with -Wextra -Werror.
-#define OMPI_SKIP_MPICXX 1
 #include <mpi.h>
 
 #include <cstdlib>

@@ -41,7 +41,9 @@ nlohmann::json fit_json(const FitSpec& spec, const FitResult& r, double wall_s) 
   j["message"] = r.message;
   for (std::size_t i = 0; i < n; ++i) {
     const FitParameter& p = spec.parameters[i];
-    j["parameters"].push_back({{"path", p.path},
+    const nlohmann::json path =
+        p.paths.size() == 1 ? nlohmann::json(p.path) : nlohmann::json(p.paths);
+    j["parameters"].push_back({{"path", path},
                                {"initial", p.initial},
                                {"value", r.values[i]},
                                {"standard_error", number_or_null(r.standard_errors[i])},

@@ -18,8 +18,11 @@ namespace fs = std::filesystem;
 
 FitParameter read_parameter(const Fields& p) {
   FitParameter fp;
-  fp.path = p.required_word("path");
-  parse_override(fp.path + "=0");  // the path's own syntax
+  fp.paths = p.node("path").IsSequence() ? p.words("path")
+                                         : std::vector<std::string>{p.required_word("path")};
+  if (fp.paths.empty()) p.fail("path", "a --set path or a list of them");
+  for (const std::string& path : fp.paths) parse_override(path + "=0");  // the path's syntax
+  fp.path = fp.paths.front();
   fp.initial = p.number("initial", any_finite(""));
   fp.lower = p.number("lower", -INFINITY, any_finite(""));
   fp.upper = p.number("upper", INFINITY, any_finite(""));
@@ -127,7 +130,9 @@ FitSpec read_fit(const std::string& path) {
     const Fields p(params[i], {path, item_field("parameters", i)},
                    {"path", "initial", "lower", "upper", "scale"});
     s.parameters.push_back(read_parameter(p));
-    if (!paths.insert(s.parameters.back().path).second) p.fail("path", "fitted twice");
+    for (const std::string& q : s.parameters.back().paths) {
+      if (!paths.insert(q).second) p.fail("path", q + " is fitted twice");
+    }
   }
   const auto curves = sequence(f.node("curves"), f.context("curves"), "curves");
   if (curves.empty()) f.fail("curves", "at least one measured curve");

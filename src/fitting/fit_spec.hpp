@@ -11,10 +11,12 @@
 
 namespace finseg {
 
-/// One fitted parameter: a `--set` path, its start value and bounds (in the scene's units)
-/// and the scale the optimiser divides it by (default |initial|).
+/// One fitted parameter: a `--set` path (or several that take the same value, e.g. the
+/// stiffness of every crease), its start value and bounds (in the scene's units) and the
+/// scale the optimiser divides it by (default |initial|).
 struct FitParameter {
-  std::string path;
+  std::string path;                ///< the first path: the parameter's name
+  std::vector<std::string> paths;  ///< every path set to the value
   double initial = 0;
   double lower = -INFINITY, upper = INFINITY;
   double scale = 1;
