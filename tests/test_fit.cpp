@@ -164,9 +164,11 @@ TEST(Fit, BadFitFilesNameTheField) {
   EXPECT_EQ(field_of("scene: z.yaml\n" + curves + "parameters: [{path: a, initial: 0}]\n"),
             "parameters[0].scale");
   EXPECT_EQ(field_of("scene: z.yaml\n" + curves + "parameters: [{path: a..b, initial: 1}]\n"),
-            "--set");
-  EXPECT_EQ(field_of("scene: z.yaml\n" + curves + p + "  - {path: a.b, initial: 2}\n"),
-            "parameters[1].path");
+            "parameters[0].path");
+  EXPECT_EQ(
+      field_of("scene: z.yaml\n" + curves +
+               "parameters:\n  - {path: a.b, initial: 1}\n  - {path: [c, a.b], initial: 2}\n"),
+      "parameters[1].path");
   EXPECT_EQ(field_of("scene: z.yaml\ncurves: [{measurements: [m.csv], window_mm: [5, 9]}]\n" + p),
             "curves[0].window_mm");
   EXPECT_EQ(field_of("scene: z.yaml\ncurves: [{measurements: [m.csv], samples: 1}]\n" + p),

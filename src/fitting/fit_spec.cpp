@@ -21,7 +21,13 @@ FitParameter read_parameter(const Fields& p) {
   fp.paths = p.node("path").IsSequence() ? p.words("path")
                                          : std::vector<std::string>{p.required_word("path")};
   if (fp.paths.empty()) p.fail("path", "a --set path or a list of them");
-  for (const std::string& path : fp.paths) parse_override(path + "=0");  // the path's syntax
+  for (const std::string& path : fp.paths) {
+    try {
+      parse_override(path + "=0");  // the path's own syntax
+    } catch (const InputError& e) {
+      p.fail("path", e.what());
+    }
+  }
   fp.path = fp.paths.front();
   fp.initial = p.number("initial", any_finite(""));
   fp.lower = p.number("lower", -INFINITY, any_finite(""));
