@@ -67,5 +67,6 @@ j = json.load(open("fit/fit.json"))
 p = j["parameters"]
 print(f"\nfit: {j['termination']}, {j['iterations']} iterations, {j['simulations']} simulations, "
       f"wall {sys.argv[1]} s ({j['wall_time_s']:.2f} s inside), "
-      + ", ".join(f"{q['path']} = {q['value']:.6g}" for q in p))
+      + ", ".join(f"{q['path'] if isinstance(q['path'], str) else q['path'][0] + ' (and the others)'}"
+                  f" = {q['value']:.6g}" for q in p))
 PY

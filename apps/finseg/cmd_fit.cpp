@@ -25,8 +25,11 @@ void print_result(const FitSpec& spec, const FitResult& r) {
   fmt::print("finseg fit {}: {} after {} iterations, {} simulations; rms {:.6g} N -> {:.6g} N\n",
              spec.file, r.termination, r.iterations, r.simulations, r.initial_rms, r.final_rms);
   for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
-    fmt::print("  {} = {:.8g} +- {:.3g}{}\n", spec.parameters[i].path, r.values[i],
-               r.standard_errors[i], r.at_bound[i] ? " (at its bound)" : "");
+    const FitParameter& p = spec.parameters[i];
+    const std::string more =
+        p.paths.size() > 1 ? fmt::format(" (and {} more paths)", p.paths.size() - 1) : "";
+    fmt::print("  {}{} = {:.8g} +- {:.3g}{}\n", p.path, more, r.values[i], r.standard_errors[i],
+               r.at_bound[i] ? " (at its bound)" : "");
   }
 }
 
