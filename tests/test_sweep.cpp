@@ -2,6 +2,7 @@
 // case order whatever the number of parallel jobs, and failing cases recorded.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "cli_test_util.hpp"
@@ -86,18 +87,26 @@ TEST(Sweep, SummaryValuesByDottedKey) {
   EXPECT_TRUE(summary_value(j, "s.x").is_null());
 }
 
-// Four static cantilever cases, two of them with an impossible thickness: the same table with
-// one job and with two, the failures recorded with finseg's message, exit status 3.
-TEST(Sweep, TableIsTheSameForAnyNumberOfJobsAndKeepsFailures) {
-  const TempDir dir;
+// A static cantilever c.yaml and a sweep s.yaml over its thickness (`thicknesses`, a YAML
+// list; -1 is refused by the scene) and two tip forces.
+void write_cantilever_sweep(const TempDir& dir, const std::string& thicknesses) {
   ASSERT_EQ(run_finseg(dir, "gen cantilever --segments 4 --tip-force 0,0,-1e-3 --out c.yaml").code,
             0);
   spit(dir / "s.yaml",
        "scene: c.yaml\n"
        "parameters:\n"
-       "  - {path: sheet.thickness, values: [1e-4, -1]}\n"
-       "  - {path: loads.0.force, values: [[0, 0, -1e-3], [0, 0, -2e-3]]}\n"
-       "outputs: [probes.tip.final, stats.newton_iterations]\n");
+       "  - {path: sheet.thickness, values: " +
+           thicknesses +
+           "}\n"
+           "  - {path: loads.0.force, values: [[0, 0, -1e-3], [0, 0, -2e-3]]}\n"
+           "outputs: [probes.tip.final, stats.newton_iterations]\n");
+}
+
+// Four static cantilever cases, two of them with an impossible thickness: the same table with
+// one job and with two, the failures recorded with finseg's message, exit status 3.
+TEST(Sweep, TableIsTheSameForAnyNumberOfJobsAndKeepsFailures) {
+  const TempDir dir;
+  write_cantilever_sweep(dir, "[1e-4, -1]");
   const auto one = run_finseg(dir, "sweep s.yaml --out one --jobs 1");
   const auto two = run_finseg(dir, "sweep s.yaml --out two --jobs 2 --quiet");
   EXPECT_EQ(one.code, 3) << one.err;
@@ -121,6 +130,30 @@ TEST(Sweep, TableIsTheSameForAnyNumberOfJobsAndKeepsFailures) {
   EXPECT_NE(lines[3].find("sheet.thickness"), std::string::npos) << lines[3];
   EXPECT_NE(one.err.find("case_004 4/4 failed"), std::string::npos) << one.err;
   EXPECT_EQ(two.err, "");
+}
+
+// The same sweep serially and under `mpirun -n 2` (each rank half of the cases, rank 0 writes
+// the table): the same table, byte for byte, failures included, and the same exit status.
+TEST(Sweep, MpiRanksGiveTheSameTableAsTheSerialRun) {
+  const TempDir dir;
+  write_cantilever_sweep(dir, "[1e-4, -1, 2e-4]");
+  // Tests run as root in CI; Open MPI refuses that unless told. Open MPI's own allocations
+  // that live until exit are not finseg's leaks (the sanitizer build's leak check).
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string lsan = std::string("LSAN_OPTIONS=suppressions=") + FINSEG_SOURCE_DIR +
+                           "/tests/lsan_openmpi.supp:print_suppressions=0 ";
+  const auto serial = run_finseg(dir, "sweep s.yaml --out serial --jobs 1 --quiet");
+  const auto mpi = run_finseg(dir, "sweep s.yaml --out mpi",
+                              lsan + "mpirun -n 2 --oversubscribe --allow-run-as-root ");
+  EXPECT_EQ(serial.code, 3) << serial.err;
+  EXPECT_EQ(mpi.code, 3) << mpi.err << mpi.out;
+  const std::string table = slurp(dir / "serial/sweep.csv");
+  EXPECT_NE(table.find("\n6,"), std::string::npos) << table;  // six cases
+  EXPECT_EQ(slurp(dir / "mpi/sweep.csv"), table);
+  // Both ranks ran cases: rank 1 the even-numbered folders (cases 1, 3, 5 from 0).
+  EXPECT_NE(mpi.err.find("rank 0: case_001"), std::string::npos) << mpi.err;
+  EXPECT_NE(mpi.err.find("rank 1: case_002"), std::string::npos) << mpi.err;
 }
 
 // The plot: the first output against the first parameter, a line per value of the others,

@@ -1,6 +1,7 @@
 // finseg sweep SWEEP.yaml --out DIR [--jobs N]: runs the base scene once per case with the
 // case's --set overrides, each as its own `finseg run` process in DIR/case_NNN, up to N at a
-// time, and writes DIR/sweep.csv in case order (docs/sweep.md).
+// time, and writes DIR/sweep.csv in case order (docs/sweep.md); under mpirun the ranks share
+// the cases and rank 0 writes the table (apps/finseg/sweep_mpi.hpp).
 #include <fmt/format.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "apps/finseg/commands.hpp"
+#include "apps/finseg/sweep_mpi.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "sweep/sweep_plot.hpp"
@@ -58,6 +60,11 @@ pid_t start_case(const SweepSpec& spec, const std::vector<Override>& c, std::siz
   return pid;
 }
 
+// "failed" when the case wrote no summary, else the summary's status.
+std::string case_status(const SweepCaseResult& r) {
+  return r.summary.is_null() ? std::string("failed") : r.summary.value("status", std::string("?"));
+}
+
 // What case i left in DIR: its summary, or the last error line of its log.
 SweepCaseResult collect(std::size_t i, const std::string& out, int exit_code) {
   SweepCaseResult r;
@@ -75,18 +82,18 @@ SweepCaseResult collect(std::size_t i, const std::string& out, int exit_code) {
   return r;
 }
 
-void sweep(const SweepOptions& o) {
-  const SweepSpec spec = read_sweep(o.sweep);
-  if (!fs::exists(spec.scene)) throw InputError(o.sweep, "scene", "no such file: " + spec.scene);
-  const std::vector<std::vector<Override>> cases = sweep_cases(spec);
-  fs::create_directories(o.out);
-  const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<SweepCaseResult> results(cases.size());
-  std::map<pid_t, std::size_t> running;
-  std::size_t next = 0, done = 0, failed = 0;
-  while (done < cases.size()) {
-    while (next < cases.size() && static_cast<int>(running.size()) < jobs) {
-      running[start_case(spec, cases[next], next, o.out)] = next;
+// Runs the cases `mine` (indices into `cases`), up to `jobs` at a time; their results in
+// the order of `mine`.
+std::vector<SweepCaseResult> run_cases(const SweepSpec& spec,
+                                       const std::vector<std::vector<Override>>& cases,
+                                       const std::vector<std::size_t>& mine, int jobs,
+                                       const SweepOptions& o, const std::string& who) {
+  std::vector<SweepCaseResult> results(mine.size());
+  std::map<pid_t, std::size_t> running;  // process -> position in `mine`
+  std::size_t next = 0, done = 0;
+  while (done < mine.size()) {
+    while (next < mine.size() && static_cast<int>(running.size()) < jobs) {
+      running[start_case(spec, cases[mine[next]], mine[next], o.out)] = next;
       ++next;
     }
     int status = 0;
@@ -94,18 +101,23 @@ void sweep(const SweepOptions& o) {
     if (pid < 0) throw std::runtime_error("waiting for the sweep's cases failed");
     const auto it = running.find(pid);
     if (it == running.end()) continue;
-    const std::size_t i = it->second;
+    const std::size_t k = it->second, i = mine[k];
     running.erase(it);
-    results[i] = collect(i, o.out, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-    const std::string st = results[i].summary.is_null()
-                               ? std::string("failed")
-                               : results[i].summary.value("status", std::string("?"));
-    if (st != "ok") ++failed;
+    results[k] = collect(i, o.out, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
     ++done;
     if (!o.quiet) {
-      fmt::print(stderr, "finseg: sweep: {} {}/{} {}\n", case_folder(i), done, cases.size(), st);
+      fmt::print(stderr, "finseg: sweep: {}{} {}/{} {}\n", who, case_folder(i), done, mine.size(),
+                 case_status(results[k]));
     }
   }
+  return results;
+}
+
+// Rank 0 (or the only process): the table and the plot; the number of cases not ok.
+int write_table(const SweepSpec& spec, const std::vector<std::vector<Override>>& cases,
+                const std::vector<SweepCaseResult>& results, const SweepOptions& o) {
+  int failed = 0;
+  for (const SweepCaseResult& r : results) failed += case_status(r) != "ok";
   const std::string table = (fs::path(o.out) / "sweep.csv").string();
   write_file_atomically(table, sweep_table_csv(spec, cases, results));
   fmt::print("wrote {} ({} cases, {} not ok)\n", table, cases.size(), failed);
@@ -118,7 +130,35 @@ void sweep(const SweepOptions& o) {
       fmt::print(stderr, "finseg: warning: {} not written: {}\n", png, e.what());
     }
   }
-  if (failed > 0) throw ExitStatus{3};
+  return failed;
+}
+
+void sweep(const SweepOptions& o) {
+  const SweepSpec spec = read_sweep(o.sweep);
+  if (!fs::exists(spec.scene)) throw InputError(o.sweep, "scene", "no such file: " + spec.scene);
+  const std::vector<std::vector<Override>> cases = sweep_cases(spec);
+  const SweepMpi mpi;  // after the checks: a bad sweep file stops every rank alike, before MPI
+  // Under mpirun each rank takes every size-th case (static round robin) and runs one at a
+  // time unless --jobs says otherwise: the ranks are the parallelism.
+  const int jobs = o.jobs > 0 ? o.jobs
+                   : mpi.active()
+                       ? 1
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::size_t> mine;
+  for (std::size_t i = mpi.rank(); i < cases.size(); i += mpi.size()) mine.push_back(i);
+  const std::string who = mpi.active() ? fmt::format("rank {}: ", mpi.rank()) : "";
+  std::vector<SweepCaseResult> results;
+  int failed = 0;
+  try {
+    fs::create_directories(o.out);
+    results = mpi.gather(mine, run_cases(spec, cases, mine, jobs, o, who), cases.size());
+    if (mpi.rank() == 0) failed = write_table(spec, cases, results, o);
+  } catch (const std::exception& e) {
+    if (!mpi.active()) throw;
+    fmt::print(stderr, "finseg: error: {}{}\n", who, e.what());
+    mpi.abort(dynamic_cast<const OutputError*>(&e) ? 4 : 2);
+  }
+  if (mpi.broadcast(failed) > 0) throw ExitStatus{3};
 }
 
 }  // namespace

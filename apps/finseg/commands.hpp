@@ -20,5 +20,6 @@ void register_compare(CLI::App& app);   ///< finseg compare SIM.csv EXP.csv...
 void register_pattern(CLI::App& app);   ///< finseg pattern check|info|zigzag ...
 void register_overlay(CLI::App& app);   ///< finseg overlay DIR... --out FILE
 void register_sweep(CLI::App& app);     ///< finseg sweep SWEEP.yaml --out DIR
+void register_fit(CLI::App& app);       ///< finseg fit FIT.yaml --out DIR
 
 }  // namespace finseg::cli

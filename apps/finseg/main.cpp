@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   finseg::cli::register_pattern(app);
   finseg::cli::register_overlay(app);
   finseg::cli::register_sweep(app);
+  finseg::cli::register_fit(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

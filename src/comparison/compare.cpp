@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "core/cubic_spline.hpp"
 #include "core/error.hpp"
@@ -93,14 +94,6 @@ double read_value(const std::string& cell, double factor, const std::string& pat
   return v;
 }
 
-std::vector<double> resample(const ForceCurve& c, const std::vector<double>& x) {
-  const CubicSpline s(c.x, c.force, SplineEnds::NotAKnot);
-  std::vector<double> y;
-  y.reserve(x.size());
-  for (double xi : x) y.push_back(s.value(xi));
-  return y;
-}
-
 // Largest value and its abscissa.
 std::pair<double, double> largest(const std::vector<double>& x, const std::vector<double>& y) {
   const size_t i = std::max_element(y.begin(), y.end()) - y.begin();
@@ -126,6 +119,32 @@ void require_finite(const Comparison& c, const ForceCurve& sim,
 }
 
 }  // namespace
+
+std::vector<double> resample_curve(const ForceCurve& c, const std::vector<double>& x) {
+  const CubicSpline s(c.x, c.force, SplineEnds::NotAKnot);
+  std::vector<double> y;
+  y.reserve(x.size());
+  for (double xi : x) y.push_back(s.value(xi));
+  return y;
+}
+
+MeasuredSpread measured_spread(const std::vector<ForceCurve>& runs, const std::vector<double>& x) {
+  MeasuredSpread m;
+  for (const ForceCurve& r : runs) m.runs.push_back(resample_curve(r, x));
+  const size_t n = runs.size();
+  for (size_t i = 0; i < x.size(); ++i) {
+    double sum = 0, lo = INFINITY, hi = -INFINITY;
+    for (const auto& r : m.runs) sum += r[i], lo = std::min(lo, r[i]), hi = std::max(hi, r[i]);
+    const double mean = sum / n;
+    double var = 0;
+    for (const auto& r : m.runs) var += (r[i] - mean) * (r[i] - mean);
+    m.mean.push_back(mean);
+    m.stddev.push_back(n > 1 ? std::sqrt(var / (n - 1)) : 0.0);
+    m.min.push_back(lo);
+    m.max.push_back(hi);
+  }
+  return m;
+}
 
 ForceCurve read_force_curve(const std::string& path, const std::string& x_column,
                             const std::string& y_column) {
@@ -201,21 +220,16 @@ Comparison compare_curves(const ForceCurve& sim, const std::vector<ForceCurve>& 
   a = std::max(a, window.lo), b = std::min(b, window.hi);
   Comparison c;
   for (int i = 0; i < samples; ++i) c.x.push_back(a + (b - a) * i / (samples - 1));
-  c.simulation = resample(sim, c.x);
-  for (const ForceCurve& r : runs) c.runs.push_back(resample(r, c.x));
-  const size_t n = runs.size();
+  c.simulation = resample_curve(sim, c.x);
+  MeasuredSpread m = measured_spread(runs, c.x);
+  c.runs = std::move(m.runs);
+  c.mean = std::move(m.mean);
+  c.stddev = std::move(m.stddev);
+  c.min = std::move(m.min);
+  c.max = std::move(m.max);
   double sq = 0;
   for (size_t i = 0; i < c.x.size(); ++i) {
-    double sum = 0, lo = INFINITY, hi = -INFINITY;
-    for (const auto& r : c.runs) sum += r[i], lo = std::min(lo, r[i]), hi = std::max(hi, r[i]);
-    const double mean = sum / n;
-    double var = 0;
-    for (const auto& r : c.runs) var += (r[i] - mean) * (r[i] - mean);
-    c.mean.push_back(mean);
-    c.stddev.push_back(n > 1 ? std::sqrt(var / (n - 1)) : 0.0);
-    c.min.push_back(lo);
-    c.max.push_back(hi);
-    const double d = c.simulation[i] - mean;
+    const double d = c.simulation[i] - c.mean[i];
     c.difference.push_back(d);
     sq += d * d;
     if (std::abs(d) > c.max_error) c.max_error = std::abs(d), c.max_error_x = c.x[i];

@@ -29,6 +29,20 @@ struct ForceCurve {
 ForceCurve read_force_curve(const std::string& path, const std::string& x_column = "",
                             const std::string& y_column = "");
 
+/// A curve's force at the displacements `x` (m), from the not-a-knot cubic spline through its
+/// points (MATLAB's `spline`); `x` inside the curve's range.
+std::vector<double> resample_curve(const ForceCurve& curve, const std::vector<double>& x);
+
+/// Repeated measurements on one displacement grid: each resampled, and their mean, sample
+/// standard deviation (n - 1; 0 for one measurement), minimum and maximum at each point, N.
+struct MeasuredSpread {
+  std::vector<std::vector<double>> runs;
+  std::vector<double> mean, stddev, min, max;
+};
+
+/// Resamples every measurement at `x` (resample_curve) and builds their spread.
+MeasuredSpread measured_spread(const std::vector<ForceCurve>& runs, const std::vector<double>& x);
+
 /// Result of compare_curves; all curves on the same displacement grid.
 struct Comparison {
   std::vector<double> x;                  ///< common grid, m

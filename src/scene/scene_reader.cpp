@@ -34,15 +34,7 @@ Scene read_scene(const std::string& path, const std::vector<Override>& overrides
 
 Scene parse_scene(const std::string& yaml, const std::string& file,
                   const std::vector<Override>& overrides) {
-  YAML::Node root_node;
-  try {
-    root_node = YAML::Load(normalize_text(yaml));
-  } catch (const YAML::Exception& e) {
-    throw InputError(file, fmt::format("line {}", e.mark.line + 1),
-                     fmt::format("malformed YAML: {}", e.msg));
-  }
-  if (!root_node.IsMap()) throw InputError(file, "<top level>", "must be a map of sections");
-  refuse_duplicate_keys(root_node, {file, ""});
+  YAML::Node root_node = load_yaml_map(yaml, file, "a map of sections");
   apply_overrides(root_node, overrides, file);
   const Fields root(
       root_node, {file, ""},

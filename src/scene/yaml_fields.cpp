@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <map>
 
 #include "core/error.hpp"
@@ -102,6 +103,29 @@ void walk_keys(const YAML::Node& node, const YamlContext& ctx, long& visited) {
 }
 
 }  // namespace
+
+std::string path_beside(const std::string& file, const std::string& named) {
+  const std::filesystem::path p(named);
+  return p.is_absolute() ? named : (std::filesystem::path(file).parent_path() / p).string();
+}
+
+YAML::Node load_yaml_map(const std::string& text, const std::string& file,
+                         const std::string& what) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(normalize_text(text));
+  } catch (const YAML::Exception& e) {
+    throw InputError(file, fmt::format("line {}", e.mark.line + 1),
+                     fmt::format("malformed YAML: {}", e.msg));
+  }
+  if (!root.IsMap()) throw InputError(file, "<top level>", "must be " + what);
+  refuse_duplicate_keys(root, {file, ""});
+  return root;
+}
+
+Fields read_fields_file(const std::string& path, const std::set<std::string>& allowed) {
+  return Fields(load_yaml_map(read_text_file(path), path, "a map"), {path, ""}, allowed);
+}
 
 void refuse_duplicate_keys(const YAML::Node& node, const YamlContext& ctx) {
   long visited = 0;

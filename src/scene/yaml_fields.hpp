@@ -73,6 +73,18 @@ std::vector<YAML::Node> sequence(const YAML::Node& node, const YamlContext& ctx,
 /// silently return the first).
 void refuse_duplicate_keys(const YAML::Node& node, const YamlContext& ctx);
 
+/// Parses YAML text read from `file` whose top level must be a map (`what` says of what,
+/// e.g. "a map of sections"); duplicate keys refused. Throws InputError naming the line.
+YAML::Node load_yaml_map(const std::string& text, const std::string& file, const std::string& what);
+
+/// Reads the YAML file `path` (load_yaml_map) as the top-level Fields of a map with the keys
+/// `allowed` (sweep and fit files).
+Fields read_fields_file(const std::string& path, const std::set<std::string>& allowed);
+
+/// A path named inside `file` (a scene, sweep or fit file): relative ones are taken from the
+/// folder of `file`.
+std::string path_beside(const std::string& file, const std::string& named);
+
 /// Field name of element i of a list: "loads" -> "loads[2]".
 std::string item_field(const std::string& list, std::size_t i);
 

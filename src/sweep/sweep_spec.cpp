@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <filesystem>
-
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "scene/yaml_fields.hpp"
@@ -43,21 +41,10 @@ std::vector<std::string> parameter_values(const Fields& p) {
 }  // namespace
 
 SweepSpec read_sweep(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(normalize_text(read_text_file(path)));
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, fmt::format("line {}", e.mark.line + 1),
-                     fmt::format("malformed YAML: {}", e.msg));
-  }
-  if (!root.IsMap()) throw InputError(path, "<top level>", "must be a map");
-  refuse_duplicate_keys(root, {path, ""});
-  const Fields f(root, {path, ""}, {"scene", "parameters", "cases", "outputs"});
+  const Fields f = read_fields_file(path, {"scene", "parameters", "cases", "outputs"});
   SweepSpec s;
   s.file = path;
-  const std::string scene = f.required_word("scene");
-  const std::filesystem::path base = std::filesystem::path(path).parent_path();
-  s.scene = std::filesystem::path(scene).is_absolute() ? scene : (base / scene).string();
+  s.scene = path_beside(path, f.required_word("scene"));
   const std::string cases = f.word("cases", "factorial");
   if (cases != "factorial" && cases != "listed") f.fail("cases", "factorial or listed");
   s.listed = cases == "listed";
