@@ -6,6 +6,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libcli11-dev libfmt-dev libboost-dev nlohmann-json3-dev zlib1g-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox libjs-three libjs-chart.js chromium
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
