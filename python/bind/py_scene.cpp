@@ -40,15 +40,6 @@ std::string yaml_value(const pyb::handle& v, const std::string& path) {
                        pyb::str(pyb::type::of(v).attr("__name__")).cast<std::string>());
 }
 
-// A numpy array of shape (n, 3) from per-body vectors.
-pyb::array_t<double> rows3(const std::vector<Vec3>& v) {
-  pyb::array_t<double> a({static_cast<pyb::ssize_t>(v.size()), pyb::ssize_t{3}});
-  auto m = a.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < v.size(); ++i)
-    for (int k = 0; k < 3; ++k) m(i, k) = v[i][k];
-  return a;
-}
-
 pyb::array_t<double> rotations(const std::vector<Mat3>& R) {
   pyb::array_t<double> a({static_cast<pyb::ssize_t>(R.size()), pyb::ssize_t{3}, pyb::ssize_t{3}});
   auto m = a.mutable_unchecked<3>();
@@ -62,6 +53,15 @@ pyb::array_t<double> rotations(const std::vector<Mat3>& R) {
 
 PyState state_of(const PyScene& s, State state) {
   return {s.scene, std::move(state), scene_inputs_hash(s.text, *s.scene)};
+}
+
+// A numpy array of shape (n, 3) from vectors.
+pyb::array_t<double> rows3(const std::vector<Vec3>& v) {
+  pyb::array_t<double> a({static_cast<pyb::ssize_t>(v.size()), pyb::ssize_t{3}});
+  auto m = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int k = 0; k < 3; ++k) m(i, k) = v[i][k];
+  return a;
 }
 
 pyb::object json_to_python(const nlohmann::json& j) {
@@ -189,6 +189,7 @@ void bind_scene(pyb::module_& m) {
       },
       pyb::arg("path"), "read a state file of this scene's model (raises InputError)");
   bind_run(m, scene);
+  bind_patterns(m);
 
   m.def(
       "load",

@@ -2,6 +2,7 @@
 // Scene (model and run settings) the library reads from them (docs/python.md).
 #pragma once
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <nlohmann/json.hpp>
@@ -43,6 +44,12 @@ PyState state_of(const PyScene& s, State state);
 
 /// A JSON value as Python objects (dict, list, float, ...).
 pybind11::object json_to_python(const nlohmann::json& j);
+
+/// A numpy array of shape (n, 3) from vectors (m, m/s, rad/s as they are).
+pybind11::array_t<double> rows3(const std::vector<Vec3>& v);
+
+/// Adds read_fold() (py_patterns.cpp).
+void bind_patterns(pybind11::module_& m);
 
 /// Adds Scene.run and the Result class (py_run.cpp).
 void bind_run(pybind11::module_& m, pybind11::class_<PyScene>& scene);

@@ -17,6 +17,7 @@ from ._finseg import (
     git_revision,
     load,
     parse,
+    read_fold,
     zigzag,
 )
 
@@ -31,5 +32,6 @@ __all__ = [
     "git_revision",
     "load",
     "parse",
+    "read_fold",
     "zigzag",
 ]
