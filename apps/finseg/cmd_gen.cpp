@@ -2,15 +2,13 @@
 // atomically) that `finseg run` reads back to the model the generators build.
 #include <fmt/format.h>
 
-#include <cmath>
-#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
 
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
-#include "scene/scene_writer.hpp"
+#include "scene/gen_options.hpp"
 #include "writers/atomic_write.hpp"
 
 namespace finseg::cli {
@@ -62,10 +60,10 @@ std::vector<int> parse_ints(const std::string& text, const char* option) {
   return out;
 }
 
+const OptionNaming kCliNames{"<cli>", "--", '-'};
+
 void apply_solver(SolverOptions& o) {
-  if (o.kind == "static") o.settings.kind = SolverKind::Static;
-  if (o.kind == "implicit") o.settings.kind = SolverKind::Implicit;
-  if (o.kind == "explicit") o.settings.kind = SolverKind::Explicit;
+  o.settings.kind = solver_kind_from_name(o.kind).value_or(SolverKind::Static);
 }
 
 void emit(const std::string& out, const std::string& yaml) {
@@ -75,16 +73,6 @@ void emit(const std::string& out, const std::string& yaml) {
     write_file_atomically(out, yaml);
     fmt::print(stderr, "wrote {}\n", out);
   }
-}
-
-// A data file named on the command line, as the scene must name it: relative to the
-// scene file's folder (crease-law files are resolved against it).
-std::string relative_to_scene(const std::string& data, const std::string& scene_out) {
-  namespace fs = std::filesystem;
-  if (!fs::exists(data)) throw InputError(data, "--crease-law", "file does not exist");
-  if (scene_out.empty() || fs::path(data).is_absolute()) return data;
-  const fs::path dir = fs::absolute(scene_out).parent_path();
-  return fs::proximate(fs::absolute(data), dir).generic_string();
 }
 
 void add_solver_options(CLI::App* cmd, SolverOptions& o) {
@@ -120,8 +108,7 @@ void register_cantilever(CLI::App* gen) {
     o->spec.tip_force = parse_vec3(o->tip_force, "--tip-force", "N");
     o->spec.tip_moment = parse_vec3(o->tip_moment, "--tip-moment", "N m");
     apply_solver(*o);
-    validate(o->spec, "<cli>");
-    emit(o->out, cantilever_scene(o->spec, o->settings));
+    emit(o->out, cantilever_gen_scene(o->spec, o->settings, kCliNames));
   });
 }
 
@@ -162,35 +149,13 @@ void register_zigzag(CLI::App* gen) {
   c->add_flag("--no-contact", o->no_contact, "no contact between panels");
   add_solver_options(c, *o);
   c->callback([o, c] {
-    const bool t_end_given = c->count("--t-end") > 0;
     ZigzagSpec& spec = o->z.spec;
     spec.fixed_panels = parse_ints(o->fixed_panels, "--fixed-panels");
     spec.overrides.bending_rigidity = o->bending_rigidity;
     spec.gravity = !o->no_gravity;
     spec.contact = !o->no_contact;
-    if (!o->z.crease_law_file.empty() && o->z.crease_stiffness) {
-      throw InputError("<cli>", "--crease-law",
-                       "give --crease-law or --crease-stiffness, not both");
-    }
-    if (o->z.pressing_time && o->z.crease_law_file.empty()) {
-      throw InputError("<cli>", "--pressing-time", "needs --crease-law");
-    }
-    if (!o->z.crease_law_file.empty()) {
-      o->z.crease_law_file = relative_to_scene(o->z.crease_law_file, o->out);
-    }
     apply_solver(*o);
-    ZigzagSpec check = spec;
-    check.fold_angle = o->z.fold_angle_deg * kDegToRad;
-    validate(check, "<cli>");
-    if (o->z.pull_speed) {
-      const double v = *o->z.pull_speed;
-      if (!(v > 0 && std::isfinite(v))) {
-        throw InputError("<cli>", "--pull-speed", fmt::format("{} m/s; must be finite and > 0", v));
-      }
-      const double travel = spec.pull_travel > 0 ? spec.pull_travel : zigzag_default_travel(check);
-      if (!t_end_given) o->settings.t_end = travel / v;
-    }
-    emit(o->out, zigzag_scene(o->z, o->settings));
+    emit(o->out, zigzag_gen_scene({o->z, o->settings, c->count("--t-end") > 0}, kCliNames, o->out));
   });
 }
 

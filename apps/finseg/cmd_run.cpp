@@ -166,16 +166,9 @@ void run_scene(const RunOptions& o) {
   const Scene scene = read_scene(o.scene, overrides);
   // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
   // table or an override changed is refused.
-  std::string inputs = read_whole_file(o.scene);
-  for (const std::string& f : scene_data_files(scene)) inputs += read_whole_file(f);
-  for (const Override& v : overrides) inputs += "\n--set " + v.path + "=" + v.value;
-  const std::string hash = scene_hash(inputs);
+  const std::string hash = scene_inputs_hash(read_whole_file(o.scene), scene);
   check_output_folder(o.out, scene);
-  RecorderOptions ro;
-  ro.frames = scene.outputs.vtk || scene.outputs.html;
-  ro.phases = scene.outputs.phases.enabled;
-  for (int p : scene.outputs.phases.panels) ro.watched_panels.push_back(p - 1);
-  RunRecorder rec(scene.model, scene.solver, ro);
+  RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
   State state = starting_state(o, scene, hash, rec);
   // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
   // the step it would have tried next). summary.json keeps the scene's settings.

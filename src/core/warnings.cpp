@@ -30,4 +30,9 @@ std::vector<std::string> recorded_warnings() {
   return warnings_list();
 }
 
+void clear_recorded_warnings() {
+  const std::lock_guard<std::mutex> lock(warnings_mutex());
+  warnings_list().clear();
+}
+
 }  // namespace finseg

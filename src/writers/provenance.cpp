@@ -14,6 +14,8 @@
 
 #include "core/version.hpp"
 #include "elements/crease_law.hpp"
+#include "scene/state_file.hpp"
+#include "writers/atomic_write.hpp"
 
 namespace finseg {
 
@@ -66,6 +68,13 @@ std::vector<std::string> scene_data_files(const Scene& scene) {
     }
   }
   return files;
+}
+
+std::string scene_inputs_hash(const std::string& scene_text, const Scene& scene) {
+  std::string inputs = scene_text;
+  for (const std::string& f : scene_data_files(scene)) inputs += read_whole_file(f);
+  for (const Override& v : scene.overrides) inputs += "\n--set " + v.path + "=" + v.value;
+  return scene_hash(inputs);
 }
 
 nlohmann::json provenance_json(const Scene& scene) {

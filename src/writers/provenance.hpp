@@ -22,6 +22,11 @@ std::string utc_now_iso8601();
 /// once, in model order.
 std::vector<std::string> scene_data_files(const Scene& scene);
 
+/// The `scene_hash` of a run's checkpoint (docs/state-file.md): the scene's text, then each
+/// of its data files' bytes, then its `--set` overrides, so that a resume is refused when any
+/// of them changed.
+std::string scene_inputs_hash(const std::string& scene_text, const Scene& scene);
+
 /// {finseg_version, git_revision, date_utc, scene: {file, sha256}, data_files: [{file,
 /// sha256}]} with data_files the crease-law CSVs of the scene's model (each once), hashed
 /// when called; sha256 is null for a file that cannot be read.

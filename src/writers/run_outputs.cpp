@@ -171,6 +171,18 @@ std::string unfinished_warning(const SolverStats& stats) {
                      stats.message.empty() ? "" : ": ", stats.message);
 }
 
+// The run's title: the scene's, else its file name without extension.
+std::string run_title(const Scene& scene) {
+  return scene.title.empty() ? fs::path(scene.file).stem().string() : scene.title;
+}
+
+// Deployment phases of a run (NaN where not found or phases are off).
+DeploymentPhases run_phases(const Scene& scene, const RunRecorder& rec) {
+  const PhaseSettings& p = scene.outputs.phases;
+  if (!p.enabled || rec.phase_samples().empty()) return {NAN, NAN, NAN};
+  return detect_phases(rec.phase_samples(), p.bend_threshold);
+}
+
 }  // namespace
 
 double deployed_at_of(const Model& m, const ProbeTable& t) {
@@ -242,6 +254,43 @@ nlohmann::json probe_summary(const ProbeTable& t, double deployed_at) {
   return j;
 }
 
+RecorderOptions recorder_options(const Scene& scene) {
+  RecorderOptions ro;
+  ro.frames = scene.outputs.vtk || scene.outputs.html;
+  ro.phases = scene.outputs.phases.enabled;
+  for (int p : scene.outputs.phases.panels) ro.watched_panels.push_back(p - 1);
+  return ro;
+}
+
+nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const SolverStats& stats,
+                           double wall_seconds, const RunReport& report) {
+  nlohmann::json probes = nlohmann::json::object();
+  for (const ProbeTable& t : rec.tables())
+    probes[t.name] = probe_summary(t, deployed_at_of(scene.model, t));
+  nlohmann::json overrides = nlohmann::json::array();
+  for (const Override& o : scene.overrides) overrides.push_back(o.path + "=" + o.value);
+  nlohmann::json j{{"scene", scene.file},
+                   {"overrides", overrides},
+                   {"title", run_title(scene)},
+                   {"status", stats.status},
+                   {"message", stats.message},
+                   {"wall_time_s", wall_seconds},
+                   {"threads", force_element_threads()},
+                   {"solver", solver_json(scene.solver)},
+                   {"stats", stats_json(stats)},
+                   {"model", model_counts(scene.model)},
+                   {"abscissa", rec.abscissa()},
+                   {"outputs", rec.outputs()},
+                   {"probes", probes},
+                   {"files", report.files},
+                   {"warnings", report.warnings}};
+  const PhaseSettings& ph = scene.outputs.phases;
+  if (ph.enabled) j["phases"] = phases_json(run_phases(scene, rec), ph);
+  j["provenance"] = provenance_json(scene);
+  for (const std::string& w : recorded_warnings()) j["warnings"].push_back(w);
+  return j;
+}
+
 RunReport write_run_outputs(const std::string& dir, const Scene& scene, const RunRecorder& rec,
                             const SolverStats& stats, double wall_seconds,
                             const std::function<void(double)>& on_progress) {
@@ -256,9 +305,8 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
     if (t.kind == ProbeKind::Drive && !first_drive) first_drive = &t;
   }
   const OutputSettings& o = scene.outputs;
-  DeploymentPhases phases{NAN, NAN, NAN};
+  const DeploymentPhases phases = run_phases(scene, rec);
   if (o.phases.enabled && !rec.phase_samples().empty()) {
-    phases = detect_phases(rec.phase_samples(), o.phases.bend_threshold);
     std::string csv = "pull_displacement_m,active_contacts,watched_bend_deg\n";
     for (const PhaseSample& p : rec.phase_samples()) {
       csv += fmt::format("{:.12g},{},{:.12g}\n", p.displacement, p.active_contacts,
@@ -266,8 +314,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
     }
     write_csv(dir, "phases.csv", csv, report);
   }
-  const std::string title =
-      scene.title.empty() ? fs::path(scene.file).stem().string() : scene.title;
+  const std::string title = run_title(scene);
   const std::string warning = unfinished_warning(stats);
   if (o.plot) {
     for (const ProbeTable& t : rec.tables()) {
@@ -309,30 +356,12 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                            rec.frames(), curve, axis, notes);
     });
   }
-  nlohmann::json overrides = nlohmann::json::array();
-  for (const Override& o : scene.overrides) overrides.push_back(o.path + "=" + o.value);
-  nlohmann::json j{{"scene", scene.file},
-                   {"overrides", overrides},
-                   {"title", title},
-                   {"status", stats.status},
-                   {"message", stats.message},
-                   {"wall_time_s", wall_seconds},
-                   {"threads", force_element_threads()},
-                   {"solver", solver_json(scene.solver)},
-                   {"stats", stats_json(stats)},
-                   {"model", model_counts(scene.model)},
-                   {"abscissa", rec.abscissa()},
-                   {"outputs", rec.outputs()},
-                   {"probes", probes},
-                   {"files", report.files},
-                   {"warnings", report.warnings}};
-  if (o.phases.enabled) j["phases"] = phases_json(phases, o.phases);
-  j["provenance"] = provenance_json(scene);
-  for (const std::string& w : recorded_warnings()) j["warnings"].push_back(w);
+  report.summary = run_summary(scene, rec, stats, wall_seconds, report);
   // Invalid UTF-8 is refused before the run (writers/output_folder.hpp); should any text
   // still carry some, the summary must not be lost for it.
-  write_file_atomically((fs::path(dir) / "summary.json").string(),
-                        j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  write_file_atomically(
+      (fs::path(dir) / "summary.json").string(),
+      report.summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   report.files.push_back("summary.json");
   return report;
 }

@@ -42,11 +42,22 @@ double deployed_at_of(const Model& model, const ProbeTable& table);
 /// null when there is none) and end_force_N / end_displacement_m (the last row).
 nlohmann::json probe_summary(const ProbeTable& table, double deployed_at = 0);
 
+/// What `finseg run` records besides the probe tables for `scene`'s outputs: frames when VTK
+/// or HTML is on, phase samples (and the watched panels) when phases are on.
+RecorderOptions recorder_options(const Scene& scene);
+
 /// What a finished (or diverged) run produced.
 struct RunReport {
   std::vector<std::string> files;     ///< written, relative to the output folder
   std::vector<std::string> warnings;  ///< optional outputs that could not be written
+  nlohmann::json summary;             ///< summary.json's object
 };
+
+/// summary.json's object (docs/scene.md): scene, status, solver and its statistics, model
+/// counts, probe_summary per probe, phases, provenance and warnings; `report` gives the
+/// files written and the warnings of outputs not written (none when nothing was written).
+nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const SolverStats& stats,
+                           double wall_seconds, const RunReport& report = {});
 
 /// Writes the run's files into `dir` (created if needed); summary.json is written last.
 /// `wall_seconds` is the whole run's wall time; `on_progress` gets the fraction of the VTK

@@ -1,0 +1,214 @@
+// Scene.run(): what `finseg run` does (same recorder, solver and output writers), with the
+// probes returned as numpy arrays and summary.json as a dict (docs/python.md).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+
+#include "core/error.hpp"
+#include "core/warnings.hpp"
+#include "elements/force_elements.hpp"
+#include "py_errors.hpp"
+#include "py_scene.hpp"
+#include "solvers/stop_request.hpp"
+#include "writers/checkpoint.hpp"
+#include "writers/output_folder.hpp"
+#include "writers/provenance.hpp"
+#include "writers/run_outputs.hpp"
+
+namespace finseg::py {
+
+namespace pyb = pybind11;
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// What a run gives back.
+struct PyResult {
+  std::shared_ptr<const Scene> scene;
+  std::vector<ProbeTable> tables;
+  nlohmann::json summary;
+  PyState state;
+  std::string abscissa;
+  std::optional<std::string> out;
+};
+
+pyb::array_t<double> column(const ProbeTable& t, std::size_t c) {
+  pyb::array_t<double> a(static_cast<pyb::ssize_t>(t.rows.size()));
+  auto m = a.mutable_unchecked<1>();
+  for (std::size_t r = 0; r < t.rows.size(); ++r) m(r) = t.rows[r][c];
+  return a;
+}
+
+// {column name: array} of one probe, in the CSV's column order.
+pyb::dict probe_dict(const ProbeTable& t) {
+  pyb::dict d;
+  for (std::size_t c = 0; c < t.columns.size(); ++c) d[pyb::str(t.columns[c])] = column(t, c);
+  return d;
+}
+
+// A contact probe's pairs as the columns of its _pairs.csv (body names as lists of str).
+pyb::dict pairs_dict(const ProbeTable& t, const Model& model) {
+  const std::size_t n = t.pair_rows.size();
+  std::vector<double> x(n), points(n), fn(n), ff(n), pen(n), fx(n), fy(n), fz(n);
+  std::vector<std::string> a(n), b(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ContactPairForce& p = t.pair_rows[i].force;
+    x[i] = t.pair_rows[i].x;
+    a[i] = model.bodies[p.a].name;
+    b[i] = model.bodies[p.b].name;
+    points[i] = p.points;
+    fn[i] = p.normal_force;
+    ff[i] = p.friction_force;
+    pen[i] = p.max_penetration;
+    fx[i] = p.f_b_W.x();
+    fy[i] = p.f_b_W.y();
+    fz[i] = p.f_b_W.z();
+  }
+  const auto arr = [](const std::vector<double>& v) {
+    return pyb::array_t<double>(static_cast<pyb::ssize_t>(v.size()), v.data());
+  };
+  pyb::dict d;
+  d[pyb::str(t.columns[0])] = arr(x);
+  d["body_a"] = a;
+  d["body_b"] = b;
+  d["points"] = arr(points);
+  d["normal_force_N"] = arr(fn);
+  d["friction_force_N"] = arr(ff);
+  d["max_penetration_m"] = arr(pen);
+  d["fx_b_N"] = arr(fx);
+  d["fy_b_N"] = arr(fy);
+  d["fz_b_N"] = arr(fz);
+  return d;
+}
+
+// The state a run starts from: the scene's initial state, or `start` checked against the
+// model as a state file would be (--state: a fresh run, the solver memory not used).
+State starting_state(const Scene& scene, const PyState* start) {
+  if (!start) return initial_state(scene.model);
+  const nlohmann::json j = state_json(start->scene->model, {start->state, start->scene_hash});
+  State s = parse_state_json(j, scene.model, "<python state>").state;
+  s.solver = SolverMemory{};
+  return s;
+}
+
+PyResult run(const PyScene& base, const std::optional<std::string>& solver,
+             const std::optional<std::string>& out, const PyState* start, int threads) {
+  const auto t0 = Clock::now();
+  clear_recorded_warnings();  // summary.json lists this run's warnings only
+  std::vector<Override> overrides = base.overrides;
+  if (solver) overrides.push_back({"solver.type", *solver});
+  const PyScene ps(base.text, base.file, overrides);
+  const Scene& scene = *ps.scene;
+  if (threads < 0 || threads > 1024)
+    throw InputError("<python>", "threads", "must be 0 (one per core) .. 1024");
+  // The thread count is process-wide: each run sets its own and puts the previous back.
+  struct ThreadsGuard {
+    int previous = force_element_threads();
+    ~ThreadsGuard() { set_force_element_threads(previous); }
+  } threads_guard;
+  if (threads > 0) set_force_element_threads(threads);
+  const std::string hash = scene_inputs_hash(ps.text, scene);
+  State state = starting_state(scene, start);
+  if (out) {
+    check_output_folder(*out, scene);
+    remove_previous_run(*out);
+    fs::remove(fs::path(*out) / "summary.json");
+  }
+  // Frames only feed the VTK and HTML files: without a folder they are not kept.
+  RecorderOptions ro = recorder_options(scene);
+  ro.frames = ro.frames && out.has_value();
+  RunRecorder rec(scene.model, scene.solver, ro);
+  // Ctrl-C: Python's handler only sets a flag; it is looked at here, between steps, and
+  // stops the run at its next output as SIGINT stops `finseg run`.
+  bool interrupted = false;
+  clear_stop_request();
+  SolverStats stats = run_solver(
+      scene.model, state, scene.solver,
+      [&](const State& s, const BodyForces& f) { rec.record(s, f); },
+      [&](double) {
+        if (!interrupted && PyErr_CheckSignals() != 0) {
+          PyErr_Clear();
+          interrupted = true;
+          request_stop();
+        }
+      });
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  PyResult r{ps.scene, rec.tables(), {}, state_of(ps, state), rec.abscissa(), out};
+  if (out) {
+    if (stats.status == "ok") write_checkpoint(*out, scene.model, {state, hash}, rec);
+    RunReport report = write_run_outputs(*out, scene, rec, stats, wall);
+    if (stats.status == "ok") report.files.push_back(kCheckpointFile);
+    write_manifest(*out, report.files);
+    r.summary = report.summary;
+  } else {
+    r.summary = run_summary(scene, rec, stats, wall);
+  }
+  if (interrupted) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw pyb::error_already_set();
+  }
+  return r;
+}
+
+}  // namespace
+
+void bind_run(pyb::module_& m, pyb::class_<PyScene>& scene) {
+  pyb::class_<PyResult>(m, "Result",
+                        "What a run recorded: probes as numpy arrays, summary.json as a dict, "
+                        "the final state.")
+      .def_property_readonly(
+          "probes",
+          [](const PyResult& r) {
+            pyb::dict d;
+            for (const ProbeTable& t : r.tables) d[pyb::str(t.name)] = probe_dict(t);
+            return d;
+          },
+          "{probe: {column: array}}; column names carry their units as in the CSV files")
+      .def_property_readonly(
+          "pairs",
+          [](const PyResult& r) {
+            pyb::dict d;
+            for (const ProbeTable& t : r.tables)
+              if (t.pairs) d[pyb::str(t.name)] = pairs_dict(t, r.scene->model);
+            return d;
+          },
+          "{contact probe with pairs: {column: array or list}} as <probe>_pairs.csv")
+      .def_property_readonly(
+          "summary", [](const PyResult& r) { return json_to_python(r.summary); },
+          "summary.json as a dict (docs/scene.md)")
+      .def_property_readonly(
+          "status", [](const PyResult& r) { return r.summary.value("status", std::string()); },
+          "ok, diverged or interrupted")
+      .def_property_readonly(
+          "abscissa", [](const PyResult& r) { return r.abscissa; },
+          "the first column of every probe: t_s, pull_displacement_m or load_scale")
+      .def_property_readonly(
+          "state", [](const PyResult& r) { return r.state; }, "the state at the end of the run")
+      .def_property_readonly(
+          "out", [](const PyResult& r) { return r.out; }, "the output folder, or None");
+
+  scene.def(
+      "run",
+      [](const PyScene& s, const std::optional<std::string>& solver,
+         const std::optional<std::string>& out, const PyState* state, int threads) {
+        PyResult r = run(s, solver, out, state, threads);
+        if (r.summary.value("status", std::string()) == "ok") return r;
+        const std::string message =
+            s.file + ": the simulation diverged: " + r.summary.value("message", std::string());
+        raise_python("DivergenceError", pyb::make_tuple(message, pyb::cast(std::move(r))));
+      },
+      pyb::arg("solver") = pyb::none(), pyb::arg("out") = pyb::none(),
+      pyb::arg("state") = pyb::none(), pyb::arg("threads") = 0,
+      "run the scene (solver: 'static', 'implicit' or 'explicit' overrides the scene's, as "
+      "--set solver.type=...); out: also write finseg run's output folder; state: start "
+      "from this State (as --state); threads: force-element threads (0: one per core). "
+      "Raises InputError, DivergenceError (its .result holds what was recorded), "
+      "KeyboardInterrupt on Ctrl-C (outputs written first).");
+}
+
+}  // namespace finseg::py
