@@ -20,12 +20,8 @@ double face_area(const Model& model, const ChamberFace& face) {
   return s.x() * s.y();
 }
 
-// Corners of the mid-surface rectangle, counter-clockwise seen from the outward side.
 std::array<Vec3, 4> corners_W(const Model& model, const State& state, const ChamberFace& face) {
-  const Vec3 h = 0.5 * model.bodies[face.body].size;
-  std::array<Vec3, 4> c_B = {Vec3(-h.x(), -h.y(), 0), Vec3(h.x(), -h.y(), 0), Vec3(h.x(), h.y(), 0),
-                             Vec3(-h.x(), h.y(), 0)};
-  if (!face.outward_plus_z) std::reverse(c_B.begin(), c_B.end());
+  const std::array<Vec3, 4> c_B = face_corners_B(model, face);
   std::array<Vec3, 4> c_W;
   for (int k = 0; k < 4; ++k) c_W[k] = state.p_W[face.body] + state.R_WB[face.body] * c_B[k];
   return c_W;
@@ -70,6 +66,14 @@ double first_gap(const Edge& e, const std::vector<Edge>& edges, double tol) {
 
 }  // namespace
 
+std::array<Vec3, 4> face_corners_B(const Model& model, const ChamberFace& face) {
+  const Vec3 h = 0.5 * model.bodies[face.body].size;
+  std::array<Vec3, 4> c_B = {Vec3(-h.x(), -h.y(), 0), Vec3(h.x(), -h.y(), 0), Vec3(h.x(), h.y(), 0),
+                             Vec3(-h.x(), h.y(), 0)};
+  if (!face.outward_plus_z) std::reverse(c_B.begin(), c_B.end());
+  return c_B;
+}
+
 double chamber_volume(const Model& model, const State& state,
                       const std::vector<ChamberFace>& faces) {
   std::vector<VolumeGradient> unused;
@@ -94,29 +98,48 @@ double chamber_volume(const Model& model, const State& state, const std::vector<
 void check_chamber_closed(const Model& model, const State& state,
                           const std::vector<ChamberFace>& faces, const std::string& field,
                           double rel_tol) {
+  check_chamber_closed(model, state, faces, {}, field, rel_tol);
+}
+
+void check_chamber_closed(const Model& model, const State& state,
+                          const std::vector<ChamberFace>& faces,
+                          const std::vector<std::vector<Vec3>>& end_plates,
+                          const std::string& field, double rel_tol) {
   if (faces.empty()) throw InputError(model.source, field, "a chamber needs faces; none given");
   std::vector<Edge> edges;
   double longest = 0;
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const auto c = corners_W(model, state, faces[i]);
-    for (int k = 0; k < 4; ++k) {
-      edges.push_back({c[k], c[(k + 1) % 4], static_cast<int>(i)});
-      longest = std::max(longest, (c[(k + 1) % 4] - c[k]).norm());
+  const auto add_loop = [&](const auto& c, int face) {
+    const std::size_t n = c.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      edges.push_back({c[k], c[(k + 1) % n], face});
+      longest = std::max(longest, (c[(k + 1) % n] - c[k]).norm());
     }
+  };
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    add_loop(corners_W(model, state, faces[i]), static_cast<int>(i));
+  }
+  for (std::size_t p = 0; p < end_plates.size(); ++p) {
+    add_loop(end_plates[p], static_cast<int>(faces.size() + p));
   }
   const double tol = rel_tol * longest;
   for (const Edge& e : edges) {
     const double gap = first_gap(e, edges, tol);
     if (gap >= 1) continue;
     const Vec3 x = e.a + gap * (e.b - e.a);
+    const bool plate = e.face >= static_cast<int>(faces.size());
+    const std::string where =
+        plate ? fmt::format("end plate {}", e.face - static_cast<int>(faces.size()))
+              : fmt::format("face {} (body '{}')", e.face, model.bodies[faces[e.face].body].name);
     throw InputError(
-        model.source, fmt::format("{}[{}]", field, e.face),
-        fmt::format("the chamber is open at face {} (body '{}'): its edge from ({:.6g}, {:.6g}, "
-                    "{:.6g}) to ({:.6g}, {:.6g}, {:.6g}) m is not met by an oppositely running "
-                    "edge of another face from ({:.6g}, {:.6g}, {:.6g}) m on (open, or "
-                    "inconsistently oriented)",
-                    e.face, model.bodies[faces[e.face].body].name, e.a.x(), e.a.y(), e.a.z(),
-                    e.b.x(), e.b.y(), e.b.z(), x.x(), x.y(), x.z()));
+        model.source,
+        plate ? fmt::format("{}.end_plates[{}]", field, e.face - static_cast<int>(faces.size()))
+              : fmt::format("{}[{}]", field, e.face),
+        fmt::format("the chamber is open at {}: its edge from ({:.6g}, {:.6g}, {:.6g}) to "
+                    "({:.6g}, {:.6g}, {:.6g}) m is not met by an oppositely running edge of "
+                    "another face from ({:.6g}, {:.6g}, {:.6g}) m on (open, or inconsistently "
+                    "oriented)",
+                    where, e.a.x(), e.a.y(), e.a.z(), e.b.x(), e.b.y(), e.b.z(), x.x(), x.y(),
+                    x.z()));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/chamber_def.hpp"
 #include "model/contact_def.hpp"
 #include "model/crease_def.hpp"
 #include "model/pressure_def.hpp"
@@ -107,6 +108,7 @@ struct Model {
   std::vector<DriveDef> drives;
   std::vector<ProbeDef> probes;
   std::vector<PressureDef> pressures;  ///< pressure loads on segment faces
+  std::vector<ChamberDef> chambers;    ///< closed volumes of gas (docs/gas.md)
   ContactDef contact;
   Vec3 gravity_W = Vec3::Zero();  ///< m/s^2
 
