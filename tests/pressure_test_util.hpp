@@ -45,4 +45,41 @@ inline std::vector<ChamberFace> add_box(Model& m, double a, double b, double c, 
   return faces;
 }
 
+/// Joins pairs of touching faces of a box along their common edge by a bushing (stiffness k
+/// N/m, kr N m/rad) at each third of the edge.
+inline void join_box_edges(Model& m, const std::vector<ChamberFace>& faces, double k, double kr) {
+  const auto corners = [&](int b) {
+    const Vec3 h = 0.5 * m.bodies[b].size;
+    std::vector<Vec3> c;
+    for (const Vec3& x : {Vec3(-h.x(), -h.y(), 0), Vec3(h.x(), -h.y(), 0), Vec3(h.x(), h.y(), 0),
+                          Vec3(-h.x(), h.y(), 0)}) {
+      c.push_back(m.bodies[b].p0_W + m.bodies[b].R0_WB * x);
+    }
+    return c;
+  };
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    for (std::size_t j = i + 1; j < faces.size(); ++j) {
+      std::vector<Vec3> shared;
+      for (const Vec3& a : corners(faces[i].body))
+        for (const Vec3& b : corners(faces[j].body))
+          if ((a - b).norm() < 1e-12) shared.push_back(a);
+      if (shared.size() != 2) continue;
+      for (const double w : {1.0 / 3, 2.0 / 3}) {
+        const Vec3 P = (1 - w) * shared[0] + w * shared[1];
+        const BodyDef& bi = m.bodies[faces[i].body];
+        const BodyDef& bj = m.bodies[faces[j].body];
+        ElementDef e;
+        e.inner = faces[i].body;
+        e.outer = faces[j].body;
+        e.c_inner_B = bi.R0_WB.transpose() * (P - bi.p0_W);
+        e.c_outer_B = bj.R0_WB.transpose() * (P - bj.p0_W);
+        e.R_inner_E = bi.R0_WB.transpose();
+        e.R_outer_F = bj.R0_WB.transpose();
+        e.K << k, k, k, kr, kr, kr;
+        m.elements.push_back(e);
+      }
+    }
+  }
+}
+
 }  // namespace finseg::test
