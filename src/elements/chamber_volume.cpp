@@ -130,9 +130,12 @@ void check_chamber_closed(const Model& model, const State& state,
     const std::string where =
         plate ? fmt::format("end plate {}", e.face - static_cast<int>(faces.size()))
               : fmt::format("face {} (body '{}')", e.face, model.bodies[faces[e.face].body].name);
+    // "chambers[2].faces" names the faces; the plates are the chamber's end_plates.
+    const std::string chamber =
+        field.ends_with(".faces") ? field.substr(0, field.size() - 6) : field;
     throw InputError(
         model.source,
-        plate ? fmt::format("{}.end_plates[{}]", field, e.face - static_cast<int>(faces.size()))
+        plate ? fmt::format("{}.end_plates[{}]", chamber, e.face - static_cast<int>(faces.size()))
               : fmt::format("{}[{}]", field, e.face),
         fmt::format("the chamber is open at {}: its edge from ({:.6g}, {:.6g}, {:.6g}) to "
                     "({:.6g}, {:.6g}, {:.6g}) m is not met by an oppositely running edge of "

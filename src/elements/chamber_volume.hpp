@@ -43,7 +43,8 @@ void check_chamber_closed(const Model& model, const State& state,
                           double rel_tol = 1e-9);
 
 /// The same for a surface closed by fixed end plates (world polygons, counter-clockwise seen
-/// from outside); an open plate edge is named as `field`.end_plates[i].
+/// from outside); an open plate edge is named as `field`.end_plates[i] (with a trailing
+/// ".faces" of `field` dropped: "chambers[0].faces" -> "chambers[0].end_plates[1]").
 void check_chamber_closed(const Model& model, const State& state,
                           const std::vector<ChamberFace>& faces,
                           const std::vector<std::vector<Vec3>>& end_plates,
