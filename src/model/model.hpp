@@ -75,7 +75,9 @@ struct DriveDef {
   double deployed_at = 0;
 };
 
-enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose };
+/// Kinds of recorded tables. Chamber tables are made by the recorder, one per chamber (not
+/// a scene probe type).
+enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose, Chamber };
 
 /// Something a user wants recorded over the run (one CSV per probe).
 struct ProbeDef {
