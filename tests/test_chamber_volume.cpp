@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
-#include "core/so3.hpp"
 #include "elements/chamber_volume.hpp"
 #include "pressure_test_util.hpp"
 #include "solvers/dofs.hpp"
@@ -15,27 +14,11 @@ namespace {
 
 using test::add_plate;
 
-constexpr double kThick = 1e-3;
+using test::add_box;
+using test::kZtoX;
+using test::kZtoY;
 
-// Rotations taking body z to world +x, +y, +z (the face normals of an axis-aligned box).
-const Mat3 kZtoX = so3_exp(Vec3(0, M_PI / 2, 0));   // x_B -> -z, z_B -> +x
-const Mat3 kZtoY = so3_exp(Vec3(-M_PI / 2, 0, 0));  // y_B -> +z, z_B -> +y
-
-// Adds the six plates of the box [0, a] x [0, b] x [0, c], every outward normal +z_B or
-// -z_B as the face list says.
-std::vector<ChamberFace> add_box(Model& m, double a, double b, double c) {
-  std::vector<ChamberFace> faces;
-  const auto face = [&](const Vec3& size, const Vec3& p, const Mat3& R, bool plus) {
-    faces.push_back({add_plate(m, fmt::format("f{}", faces.size()), size, p, R), plus});
-  };
-  face({a, b, kThick}, {a / 2, b / 2, c}, Mat3::Identity(), true);
-  face({a, b, kThick}, {a / 2, b / 2, 0}, Mat3::Identity(), false);
-  face({c, b, kThick}, {a, b / 2, c / 2}, kZtoX, true);
-  face({c, b, kThick}, {0, b / 2, c / 2}, kZtoX, false);
-  face({a, c, kThick}, {a / 2, b, c / 2}, kZtoY, true);
-  face({a, c, kThick}, {a / 2, 0, c / 2}, kZtoY, false);
-  return faces;
-}
+constexpr double kThick = test::kPlateThickness;
 
 void move_rigidly(State& st, const Mat3& R, const Vec3& t) {
   for (size_t i = 0; i < st.p_W.size(); ++i) {

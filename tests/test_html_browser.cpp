@@ -78,8 +78,8 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   const auto s = writer_test::make_zigzag_scene(40);
   const fs::path page = dir / "zigzag.html";
   // With a run-status banner and a chart mark, so that their code runs in the browser too.
-  const HtmlAnnotations notes{"RUN INTERRUPTED - not finished",
-                              {{s.curve.x[10], s.curve.y[10], "deployment peak"}}};
+  const HtmlAnnotations notes{
+      "RUN INTERRUPTED - not finished", {{s.curve.x[10], s.curve.y[10], "deployment peak"}}, {}};
   write_html_animation(page.string(), "Zigzag strip (browser test)", s.model, s.frames, s.curve,
                        FrameAxis{}, notes);
 

@@ -123,7 +123,8 @@ TEST(HtmlAnimation, UnfinishedRunShowsABannerAndPeaksAreMarked) {
   auto s = writer_test::make_zigzag_scene(6);
   const writer_test::TempDir tmp("html_banner");
   const fs::path path = tmp / "warned.html";
-  HtmlAnnotations notes{"RUN DIVERGED - not finished: <step> & more", {{2.5, 0.1, "peak 0.1 N"}}};
+  HtmlAnnotations notes{
+      "RUN DIVERGED - not finished: <step> & more", {{2.5, 0.1, "peak 0.1 N"}}, {}};
   write_html_animation(path.string(), "t", s.model, s.frames, s.curve, {}, notes);
   const std::string page = slurp(path);
   EXPECT_NE(page.find("<div id=\"runwarning\" role=\"alert\">RUN DIVERGED - not finished: "

@@ -2,6 +2,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "elements/assembler.hpp"
+#include "elements/chamber_gas.hpp"
 #include "elements/crease_history.hpp"
 #include "elements/force_elements.hpp"
 #include "elements/pressure.hpp"
@@ -74,6 +75,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   add_force_elements(model, state, as);
   add_loads_and_gravity(model, state, as);
   add_pressure_loads(model, state, as);
+  add_chamber_pressures(model, state, as);
   add_drives(model, state, as);
   add_contact_forces(model, state, as);
   if (jac) {
@@ -105,6 +107,7 @@ Vec3 drive_force(const Model& model, const State& state, int i) {
 void commit_history(const Model& model, State& state) {
   commit_crease_history(model, state);
   commit_contact_history(model, state);
+  commit_chamber_gas(model, state);
 }
 
 }  // namespace finseg

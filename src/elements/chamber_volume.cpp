@@ -15,14 +15,9 @@ Vec3 outward_normal_W(const State& state, const ChamberFace& face) {
   return face.outward_plus_z ? z_W : Vec3(-z_W);
 }
 
-// Corners of the mid-surface polygon, counter-clockwise seen from the outward side.
 std::vector<Vec3> corners_W(const Model& model, const State& state, const ChamberFace& face) {
-  const BodyDef& b = model.bodies[face.body];
-  std::vector<Vec3> c_W;
-  for (const Vec2& v : b.outline_B) {
-    c_W.push_back(state.p_W[face.body] + state.R_WB[face.body] * Vec3(v.x(), v.y(), 0));
-  }
-  if (!face.outward_plus_z) std::reverse(c_W.begin(), c_W.end());
+  std::vector<Vec3> c_W = face_corners_B(model, face);
+  for (Vec3& c : c_W) c = state.p_W[face.body] + state.R_WB[face.body] * c;
   return c_W;
 }
 
@@ -65,6 +60,13 @@ double first_gap(const Edge& e, const std::vector<Edge>& edges, double tol) {
 
 }  // namespace
 
+std::vector<Vec3> face_corners_B(const Model& model, const ChamberFace& face) {
+  std::vector<Vec3> c_B;
+  for (const Vec2& v : model.bodies[face.body].outline_B) c_B.emplace_back(v.x(), v.y(), 0);
+  if (!face.outward_plus_z) std::reverse(c_B.begin(), c_B.end());
+  return c_B;
+}
+
 double chamber_volume(const Model& model, const State& state,
                       const std::vector<ChamberFace>& faces) {
   std::vector<VolumeGradient> unused;
@@ -89,29 +91,51 @@ double chamber_volume(const Model& model, const State& state, const std::vector<
 void check_chamber_closed(const Model& model, const State& state,
                           const std::vector<ChamberFace>& faces, const std::string& field,
                           double rel_tol) {
+  check_chamber_closed(model, state, faces, {}, field, rel_tol);
+}
+
+void check_chamber_closed(const Model& model, const State& state,
+                          const std::vector<ChamberFace>& faces,
+                          const std::vector<std::vector<Vec3>>& end_plates,
+                          const std::string& field, double rel_tol) {
   if (faces.empty()) throw InputError(model.source, field, "a chamber needs faces; none given");
   std::vector<Edge> edges;
   double longest = 0;
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const std::vector<Vec3> c = corners_W(model, state, faces[i]);
-    for (std::size_t k = 0; k < c.size(); ++k) {
-      edges.push_back({c[k], c[(k + 1) % c.size()], static_cast<int>(i)});
-      longest = std::max(longest, (c[(k + 1) % c.size()] - c[k]).norm());
+  const auto add_loop = [&](const auto& c, int face) {
+    const std::size_t n = c.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      edges.push_back({c[k], c[(k + 1) % n], face});
+      longest = std::max(longest, (c[(k + 1) % n] - c[k]).norm());
     }
+  };
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    add_loop(corners_W(model, state, faces[i]), static_cast<int>(i));
+  }
+  for (std::size_t p = 0; p < end_plates.size(); ++p) {
+    add_loop(end_plates[p], static_cast<int>(faces.size() + p));
   }
   const double tol = rel_tol * longest;
   for (const Edge& e : edges) {
     const double gap = first_gap(e, edges, tol);
     if (gap >= 1) continue;
     const Vec3 x = e.a + gap * (e.b - e.a);
+    const bool plate = e.face >= static_cast<int>(faces.size());
+    const std::string where =
+        plate ? fmt::format("end plate {}", e.face - static_cast<int>(faces.size()))
+              : fmt::format("face {} (body '{}')", e.face, model.bodies[faces[e.face].body].name);
+    // "chambers[2].faces" names the faces; the plates are the chamber's end_plates.
+    const std::string chamber =
+        field.ends_with(".faces") ? field.substr(0, field.size() - 6) : field;
     throw InputError(
-        model.source, fmt::format("{}[{}]", field, e.face),
-        fmt::format("the chamber is open at face {} (body '{}'): its edge from ({:.6g}, {:.6g}, "
-                    "{:.6g}) to ({:.6g}, {:.6g}, {:.6g}) m is not met by an oppositely running "
-                    "edge of another face from ({:.6g}, {:.6g}, {:.6g}) m on (open, or "
-                    "inconsistently oriented)",
-                    e.face, model.bodies[faces[e.face].body].name, e.a.x(), e.a.y(), e.a.z(),
-                    e.b.x(), e.b.y(), e.b.z(), x.x(), x.y(), x.z()));
+        model.source,
+        plate ? fmt::format("{}.end_plates[{}]", chamber, e.face - static_cast<int>(faces.size()))
+              : fmt::format("{}[{}]", field, e.face),
+        fmt::format("the chamber is open at {}: its edge from ({:.6g}, {:.6g}, {:.6g}) to "
+                    "({:.6g}, {:.6g}, {:.6g}) m is not met by an oppositely running edge of "
+                    "another face from ({:.6g}, {:.6g}, {:.6g}) m on (open, or inconsistently "
+                    "oriented)",
+                    where, e.a.x(), e.a.y(), e.a.z(), e.b.x(), e.b.y(), e.b.z(), x.x(), x.y(),
+                    x.z()));
   }
 }
 

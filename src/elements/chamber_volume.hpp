@@ -3,6 +3,7 @@
 // polyhedron, with its derivative with respect to each body's pose perturbation.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "core/types.hpp"
@@ -11,12 +12,9 @@
 
 namespace finseg {
 
-/// One face of a chamber: the mid-surface polygon of `body` with its outward normal
-/// +z_B (outward_plus_z) or -z_B.
-struct ChamberFace {
-  int body = -1;
-  bool outward_plus_z = true;
-};
+/// Corners of a face's mid-surface polygon in its body frame, m, counter-clockwise seen
+/// from the outward side.
+std::vector<Vec3> face_corners_B(const Model& model, const ChamberFace& face);
 
 /// d V / d(pose perturbation) of one face's body: dp (m^2) and dphi (world-frame rotation
 /// vector, m^3/rad), the perturbation compute_forces' Jacobian uses.
@@ -43,5 +41,13 @@ double chamber_volume(const Model& model, const State& state, const std::vector<
 void check_chamber_closed(const Model& model, const State& state,
                           const std::vector<ChamberFace>& faces, const std::string& field,
                           double rel_tol = 1e-9);
+
+/// The same for a surface closed by fixed end plates (world polygons, counter-clockwise seen
+/// from outside); an open plate edge is named as `field`.end_plates[i] (with a trailing
+/// ".faces" of `field` dropped: "chambers[0].faces" -> "chambers[0].end_plates[1]").
+void check_chamber_closed(const Model& model, const State& state,
+                          const std::vector<ChamberFace>& faces,
+                          const std::vector<std::vector<Vec3>>& end_plates,
+                          const std::string& field, double rel_tol = 1e-9);
 
 }  // namespace finseg

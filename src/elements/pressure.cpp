@@ -37,21 +37,22 @@ double largest_pressure_force(const Model& model) {
   return f;
 }
 
+void add_face_pressure(const Model& model, int body, PressureSide side, double p, Assembler& as) {
+  const Vec3 f_B = p * segment_area(model.bodies[body]) * pressure_direction_B(side);
+  as.single(body, [&](const auto& A, auto& w) {
+    using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
+    // Uniform pressure on a flat polygon: the resultant acts at its centroid, which
+    // is the body's centroid (mid-surface), so it has no moment about it.
+    w.f_W += A.R_WB * f_B.cast<T>();
+    return T(0);
+  });
+}
+
 void add_pressure_loads(const Model& model, const State& state, Assembler& as) {
   for (const PressureDef& def : model.pressures) {
     const double p = pressure_now(def, state.t, state.load_scale);
     if (p == 0) continue;
-    const Vec3 n_B = pressure_direction_B(def.side);
-    for (int b : def.bodies) {
-      const Vec3 f_B = p * segment_area(model.bodies[b]) * n_B;
-      as.single(b, [&](const auto& A, auto& w) {
-        using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
-        // Uniform pressure on a flat polygon: the resultant acts at its centroid, which
-        // is the body's centroid (mid-surface), so it has no moment about it.
-        w.f_W += A.R_WB * f_B.cast<T>();
-        return T(0);
-      });
-    }
+    for (int b : def.bodies) add_face_pressure(model, b, def.side, p, as);
   }
 }
 

@@ -20,6 +20,10 @@ Vec3 pressure_direction_B(PressureSide side);
 /// Largest resultant p A of one pressure load over its bodies and table, N (solver scales).
 double largest_pressure_force(const Model& model);
 
+/// Adds a uniform pressure p (Pa) on the mid-surface rectangle of `body`, pressing on
+/// `side`, as a follower force with its exact Jacobian.
+void add_face_pressure(const Model& model, int body, PressureSide side, double p, Assembler& as);
+
 /// Adds every pressure load of the model through the assembler (exact, unsymmetric
 /// Jacobian). Potential energy: none (docs/pressure.md says why).
 void add_pressure_loads(const Model& model, const State& state, Assembler& as);

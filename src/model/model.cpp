@@ -143,6 +143,7 @@ void validate(const Model& m) {
   }
   if (!finite(m.gravity_W)) throw InputError(m.source, "gravity", "must be finite");
   validate_pressures(m.pressures, static_cast<int>(m.bodies.size()), m.source);
+  validate_chambers(m.chambers, static_cast<int>(m.bodies.size()), m.source);
   if (static_cast<int>(m.dof_of_body.size()) != static_cast<int>(m.bodies.size())) {
     throw InputError(m.source, "bodies", "finalize_dofs() was not called after adding bodies");
   }

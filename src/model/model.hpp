@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/chamber_def.hpp"
 #include "model/contact_def.hpp"
 #include "model/crease_def.hpp"
 #include "model/pressure_def.hpp"
@@ -79,7 +80,9 @@ struct DriveDef {
   double deployed_at = 0;
 };
 
-enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose };
+/// Kinds of recorded tables. Chamber tables are made by the recorder, one per chamber (not
+/// a scene probe type).
+enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose, Chamber };
 
 /// Something a user wants recorded over the run (one CSV per probe).
 struct ProbeDef {
@@ -112,6 +115,7 @@ struct Model {
   std::vector<DriveDef> drives;
   std::vector<ProbeDef> probes;
   std::vector<PressureDef> pressures;  ///< pressure loads on segment faces
+  std::vector<ChamberDef> chambers;    ///< closed volumes of gas (docs/gas.md)
   ContactDef contact;
   Vec3 gravity_W = Vec3::Zero();  ///< m/s^2
 

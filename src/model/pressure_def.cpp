@@ -47,11 +47,16 @@ void validate_pressures(const std::vector<PressureDef>& defs, int num_bodies,
                          fmt::format("body index {} out of range [0, {})", b, num_bodies));
       }
     }
-    if (d.at.empty() && d.pressures.empty()) {
-      check_pressure(d.pressure, source, f + ".pressure");
-    } else {
-      check_table(d, source, f);
-    }
+    validate_pressure_value(d, source, f);
+  }
+}
+
+void validate_pressure_value(const PressureDef& d, const std::string& source,
+                             const std::string& field) {
+  if (d.at.empty() && d.pressures.empty()) {
+    check_pressure(d.pressure, source, field + ".pressure");
+  } else {
+    check_table(d, source, field);
   }
 }
 

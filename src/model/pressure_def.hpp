@@ -31,4 +31,9 @@ struct PressureDef {
 void validate_pressures(const std::vector<PressureDef>& defs, int num_bodies,
                         const std::string& source);
 
+/// Checks the value part of `d` (constant or table, as validate_pressures does), naming
+/// `field` (e.g. "chambers[0]").
+void validate_pressure_value(const PressureDef& d, const std::string& source,
+                             const std::string& field);
+
 }  // namespace finseg

@@ -19,7 +19,22 @@ State initial_state(const Model& model) {
     const int c = model.elements[k].crease;
     if (c >= 0) s.history[k].fold_angle = model.creases[c].initial_fold_angle;
   }
+  for (const ChamberDef& c : model.chambers) s.chambers.push_back(initial_gas(c));
   return s;
+}
+
+ChamberGas initial_gas(const ChamberDef& c) {
+  ChamberGas g;
+  g.volume = c.initial_volume;
+  g.temperature = c.temperature;
+  if (c.gas == GasModel::Prescribed) {
+    g.pressure = c.prescribed.at.empty() ? c.prescribed.pressure : c.prescribed.pressures.front();
+    return g;
+  }
+  g.pressure = c.initial_pressure;
+  g.mass = c.initial_pressure * c.initial_volume / (c.gas_constant * c.temperature);
+  g.energy = c.initial_pressure * c.initial_volume / (c.gamma - 1);
+  return g;
 }
 
 }  // namespace finseg

@@ -31,6 +31,20 @@ struct SolverMemory {
   double h_prev = 0;
 };
 
+/// Gas of one chamber at the last accepted step (docs/gas.md). Between steps the pressure
+/// follows from this record, the elapsed time and the volume of the trial state.
+struct ChamberGas {
+  double t = 0;            ///< time of the record, s (static solver: its load or drive parameter)
+  double mass = 0;         ///< kg
+  double energy = 0;       ///< internal energy, J (adiabatic gas)
+  double volume = 0;       ///< m^3
+  double pressure = 0;     ///< Pa
+  double temperature = 0;  ///< K
+  double work = 0;         ///< work of the gas on the structure since the start, J
+  double injected = 0;     ///< mass that came in since the start, kg
+  double vented = 0;       ///< mass that left through the vents since the start, kg
+};
+
 struct State {
   double t = 0;                         ///< s (static solver: load or drive parameter)
   std::vector<Vec3> p_W;                ///< centroid positions, m
@@ -42,9 +56,16 @@ struct State {
   std::vector<ElementHistory> history;  ///< one per force element
   ContactState contact;                 ///< contact points' history (friction anchors)
   SolverMemory solver;                  ///< integrator memory (checkpoints, resume)
+  std::vector<ChamberGas> chambers;     ///< one per Model::chambers
+  /// Set by the static solver: t is a load or drive parameter, not time, and gas models give
+  /// their quasi-static pressure (docs/gas.md).
+  bool quasi_static = false;
 };
 
 /// State at t = 0: initial poses, zero velocities, initial crease angles.
 State initial_state(const Model& model);
+
+/// Gas of a chamber at t = 0: initial pressure and temperature in its initial volume.
+ChamberGas initial_gas(const ChamberDef& chamber);
 
 }  // namespace finseg

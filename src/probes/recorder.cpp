@@ -33,6 +33,8 @@ std::string probe_kind_name(ProbeKind kind) {
       return "element";
     case ProbeKind::Pose:
       return "pose";
+    case ProbeKind::Chamber:
+      return "chamber";
     case ProbeKind::Contact:
       break;
   }
@@ -55,7 +57,7 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
       return {
           x, "force_x_N", "force_y_N", "force_z_N", "moment_x_Nm", "moment_y_Nm", "moment_z_Nm"};
     case ProbeKind::Energy:
-      return {x, "potential_J", "kinetic_J", "total_J"};
+      return {x, "potential_J", "kinetic_J", "total_J", "gas_work_J"};
     case ProbeKind::Crease:
       return {x, "fold_angle_deg", "opening_angle_deg", "moment_Nm"};
     case ProbeKind::Element:
@@ -63,6 +65,9 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
           x, "force_x_N", "force_y_N", "force_z_N", "moment_x_Nm", "moment_y_Nm", "moment_z_Nm"};
     case ProbeKind::Pose:
       return {x, "x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "rx_rad", "ry_rad", "rz_rad"};
+    case ProbeKind::Chamber:
+      return {x,        "pressure_Pa", "volume_m3", "mass_kg", "temperature_K",
+              "work_J", "injected_kg", "vented_kg"};
     case ProbeKind::Contact:
       break;
   }
@@ -108,12 +113,28 @@ RunRecorder::RunRecorder(const Model& model, const SolverSettings& settings,
     crease_elements_.push_back(p.kind == ProbeKind::Crease ? crease_elements(model, p.crease)
                                                            : std::vector<int>{});
   }
+  for (const ChamberDef& c : model.chambers) {
+    tables_.push_back({chamber_table_name(c),
+                       ProbeKind::Chamber,
+                       columns_of(ProbeKind::Chamber, abscissa_),
+                       {},
+                       false,
+                       {}});
+  }
+}
+
+std::string chamber_table_name(const ChamberDef& chamber) {
+  return "chamber_" + chamber.name;
 }
 
 std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const BodyForces& f,
                                      const ContactSummary* contact) const {
-  const ProbeDef& p = model_.probes[probe];
   const double x = last_x_;
+  if (probe >= model_.probes.size()) {  // the chambers' tables follow the probes
+    const ChamberGas& g = s.chambers[probe - model_.probes.size()];
+    return {x, g.pressure, g.volume, g.mass, g.temperature, g.work, g.injected, g.vented};
+  }
+  const ProbeDef& p = model_.probes[probe];
   switch (p.kind) {
     case ProbeKind::Point: {
       const Vec3 r = s.p_W[p.body] + s.R_WB[p.body] * p.point_B;
@@ -139,7 +160,9 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
     }
     case ProbeKind::Energy: {
       const double kinetic = dynamic_ ? kinetic_energy(model_, s) : 0.0;
-      return {x, f.potential_energy, kinetic, f.potential_energy + kinetic};
+      double gas_work = 0;  // p dV done on the structure by every chamber's gas
+      for (const ChamberGas& g : s.chambers) gas_work += g.work;
+      return {x, f.potential_energy, kinetic, f.potential_energy + kinetic, gas_work};
     }
     case ProbeKind::Crease:
       return crease_row(x, model_, s, crease_elements_[probe]);
@@ -155,6 +178,7 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
     }
     case ProbeKind::Pose:
       return pose_row(x, s.p_W[p.body], s.R_WB[p.body]);
+    case ProbeKind::Chamber:  // handled above
     case ProbeKind::Contact:
       break;
   }

@@ -23,7 +23,8 @@ struct PairSample {
   ContactPairForce force;
 };
 
-/// Recorded history of one probe; every column name carries its unit (e.g. "z_m").
+/// Recorded history of one probe, or of one chamber's gas (after the probes, one per
+/// chamber); every column name carries its unit (e.g. "z_m").
 struct ProbeTable {
   std::string name;
   ProbeKind kind = ProbeKind::Point;
@@ -36,6 +37,9 @@ struct ProbeTable {
 /// What the run's x axis is: "t_s" (dynamic solvers), "pull_displacement_m" (static solver
 /// pulling its first drive), "load_scale" (static solver, loads only).
 std::string abscissa_column(const Model& model, const SolverSettings& settings);
+
+/// Name of a chamber's table and file stem: "chamber_<name>".
+std::string chamber_table_name(const ChamberDef& chamber);
 
 /// Name of a probe kind as written in scene files.
 std::string probe_kind_name(ProbeKind kind);

@@ -6,10 +6,8 @@
 #include "scene/scene_parts.hpp"
 
 namespace finseg {
-namespace {
 
-// `panels: [1, 3]` (1-based, as elsewhere in a scene) or `bodies: all` or `bodies: [names]`.
-std::vector<int> pressed_bodies(const Fields& f, const Model& m) {
+std::vector<int> selected_bodies(const Fields& f, const Model& m) {
   if (f.has("panels") == f.has("bodies")) f.fail("panels", "give either panels: [..] or bodies");
   std::vector<int> out;
   if (f.has("panels")) {
@@ -43,14 +41,14 @@ std::vector<int> pressed_bodies(const Fields& f, const Model& m) {
   return out;
 }
 
-PressureSide pressure_side(const Fields& f) {
-  const std::string side = f.required_word("side");
-  if (side == "+z") return PressureSide::PlusZ;
-  if (side == "-z") return PressureSide::MinusZ;
-  f.fail("side", "'" + side + "'; allowed: +z, -z (the face of the body frame pressed)");
+bool plus_z_side(const Fields& f, const std::string& key, const std::string& meaning) {
+  const std::string side = f.required_word(key);
+  if (side == "+z") return true;
+  if (side == "-z") return false;
+  f.fail(key, "'" + side + "'; allowed: +z, -z (" + meaning + ")");
 }
 
-void read_table(const Fields& f, PressureDef& d) {
+void read_pressure_table(const Fields& f, PressureDef& d) {
   const Fields t(f.node("table"), f.context("table"), {"versus", "at", "pressure"});
   const std::string versus = t.required_word("versus");
   if (versus == "time") {
@@ -66,8 +64,6 @@ void read_table(const Fields& f, PressureDef& d) {
   if (d.at.empty()) t.fail("at", "the table needs at least one row");
 }
 
-}  // namespace
-
 void read_pressures(const Fields& root, Model& m) {
   const auto items = sequence(root.node("pressures"), root.context("pressures"), "pressures");
   for (std::size_t i = 0; i < items.size(); ++i) {
@@ -75,15 +71,16 @@ void read_pressures(const Fields& root, Model& m) {
                    {"name", "panels", "bodies", "side", "pressure", "table"});
     PressureDef d;
     d.name = f.word("name", fmt::format("pressure{}", i + 1));
-    d.bodies = pressed_bodies(f, m);
-    d.side = pressure_side(f);
+    d.bodies = selected_bodies(f, m);
+    d.side = plus_z_side(f, "side", "the face of the body frame pressed") ? PressureSide::PlusZ
+                                                                          : PressureSide::MinusZ;
     if (f.has("pressure") == f.has("table")) {
       f.fail("pressure", "give either pressure: P (Pa) or table: {versus, at, pressure}");
     }
     if (f.has("pressure")) {
       d.pressure = f.number("pressure", non_negative("Pa"));
     } else {
-      read_table(f, d);
+      read_pressure_table(f, d);
     }
     m.pressures.push_back(d);
   }

@@ -27,6 +27,20 @@ void read_attachments(const Fields& root, bool zigzag, Model& model);
 /// The `pressures:` section: pressure loads on panels or bodies (docs/scene.md).
 void read_pressures(const Fields& root, Model& model);
 
+/// Bodies a section entry selects: `panels: [1, 3]` (1-based) or `bodies: all` or
+/// `bodies: [names]` (exactly one of the two keys).
+std::vector<int> selected_bodies(const Fields& f, const Model& model);
+
+/// Reads `key: +z | -z`: true for +z; `meaning` explains the choice in the error message.
+bool plus_z_side(const Fields& f, const std::string& key, const std::string& meaning);
+
+/// Reads `table: {versus: time | load_scale, at: [..], pressure: [..] Pa}` into `d`.
+void read_pressure_table(const Fields& f, PressureDef& d);
+
+/// The `chambers:` section: closed volumes of gas (docs/scene.md, docs/gas.md). Call after
+/// the bodies are final; the geometry is checked by prepare_chambers.
+void read_chambers(const Fields& root, Model& model);
+
 /// The `solver:` section.
 SolverSettings read_solver_section(const Fields& root);
 

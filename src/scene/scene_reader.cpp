@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/text.hpp"
+#include "elements/chamber_gas.hpp"
 #include "scene/scene_parts.hpp"
 
 namespace finseg {
@@ -36,10 +37,10 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
                   const std::vector<Override>& overrides) {
   YAML::Node root_node = load_yaml_map(yaml, file, "a map of sections");
   apply_overrides(root_node, overrides, file);
-  const Fields root(
-      root_node, {file, ""},
-      {"title", "material", "sheet", "discretisation", "stiffness", "fixtures", "gravity", "loads",
-       "drives", "probes", "contact", "zigzag", "pattern", "solver", "outputs", "pressures"});
+  const Fields root(root_node, {file, ""},
+                    {"title", "material", "sheet", "discretisation", "stiffness", "fixtures",
+                     "gravity", "loads", "drives", "probes", "contact", "zigzag", "pattern",
+                     "solver", "outputs", "pressures", "chambers"});
   Scene scene;
   scene.file = file;
   scene.overrides = overrides;
@@ -48,6 +49,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
     scene.model = read_structure(root, scene.zigzag, scene.pattern_file);
     read_attachments(root, scene.zigzag, scene.model);
     read_pressures(root, scene.model);
+    read_chambers(root, scene.model);
     scene.solver = read_solver_section(root);
     scene.outputs = read_outputs_section(root, scene.model);
     check_run_size(scene, scene.zigzag ? "zigzag.pull_step" : "drives[0].step");
@@ -56,6 +58,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
   }
   try {
     validate(scene.model);
+    prepare_chambers(scene.model);  // closed, oriented outwards, vents smaller than the faces
   } catch (const InputError& e) {
     const std::string prefix = e.file() + ": " + e.field() + ": ";
     std::string what = e.what();

@@ -3,15 +3,22 @@
 #include <fmt/format.h>
 
 namespace finseg {
-namespace {
 
-// Shortest text that reads back to the same double.
-std::string num(double x) {
-  return fmt::format("{}", x);
+std::string yaml_number(double x) {
+  return fmt::format("{}", x);  // shortest text that reads back to the same double
 }
 
+std::string yaml_vector(const Vec3& v) {
+  return fmt::format("[{}, {}, {}]", yaml_number(v.x()), yaml_number(v.y()), yaml_number(v.z()));
+}
+
+namespace {
+
+std::string num(double x) {
+  return yaml_number(x);
+}
 std::string vec(const Vec3& v) {
-  return fmt::format("[{}, {}, {}]", num(v.x()), num(v.y()), num(v.z()));
+  return yaml_vector(v);
 }
 
 std::string header(const std::string& what, const std::string& command) {

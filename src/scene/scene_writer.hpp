@@ -29,6 +29,16 @@ struct ZigzagSceneOptions {
 /// The zigzag strip scene: every ZigzagSpec field written out explicitly.
 std::string zigzag_scene(const ZigzagSceneOptions& options, const SolverSettings& solver);
 
+/// The `chambers:` section of `model` (docs/scene.md) as YAML that read_scene() reads back
+/// to the same chambers; faces name their bodies. Empty without chambers.
+std::string chambers_section(const Model& model);
+
+/// Shortest decimal text of x that reads back to the same double.
+std::string yaml_number(double x);
+
+/// `[x, y, z]` with yaml_number components.
+std::string yaml_vector(const Vec3& v);
+
 /// Quotes a string for YAML (single quotes, '' inside).
 std::string yaml_quote(const std::string& s);
 

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
+#include "elements/chamber_gas.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/step_limits.hpp"
@@ -69,6 +70,7 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   const double h = settings.dt > 0 ? settings.dt : automatic_step(model, state);
   const double every = output_interval(settings);
   stats.smallest_step = stats.largest_step = h;
+  set_quasi_static(state, false);
   set_drives_at_time(model, state, state.t);
   commit_history(model, state);  // the start is a state the structure is in
   BodyForces f;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "elements/chamber_gas.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/step_limits.hpp"
@@ -49,6 +50,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   const double tol = settings.atol + settings.rtol * length_scale;
   const std::unique_ptr<TimeStepper> stepper = make_stepper(settings, tol);
   const double root = 1.0 / stepper->error_order();
+  set_quasi_static(state, false);
   set_drives_at_time(model, state, state.t);
   commit_history(model, state);  // the start is a state the structure is in
   BodyForces f;
@@ -74,7 +76,8 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   stats.smallest_step = h;
   bool after_rejection = false;
   while (state.t < settings.t_end - 1e-12 * every) {
-    const double h_try = std::min({h, next_output - state.t, settings.t_end - state.t});
+    const double h_try = std::min(
+        {h, next_output - state.t, settings.t_end - state.t, gas_step_limit(model, state)});
     require_step_advances(state.t, h_try, "implicit solver");
     const State start = state;
     const StepTry r = stepper->attempt(model, start, h_try, state, f, stats);

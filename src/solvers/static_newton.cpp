@@ -7,6 +7,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "core/error.hpp"
+#include "elements/chamber_gas.hpp"
 #include "elements/pressure.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
@@ -26,6 +27,7 @@ double force_scale(const Model& model) {
   for (const BodyDef& b : model.bodies) weight += b.mass;
   f = std::max(f, weight * model.gravity_W.norm());
   f = std::max(f, largest_pressure_force(model));
+  f = std::max(f, largest_chamber_force(model));
   for (const DriveDef& d : model.drives) {
     f = std::max(f, d.stiffness * std::max(d.step, 1e-3 * L));
   }
@@ -363,6 +365,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
                 const OutputCallback& on_output, const ProgressCallback& on_progress,
                 SolverStats& stats) {
   const double fscale = force_scale(model);
+  set_quasi_static(state, true);
   for (Vec3& v : state.v_W) v.setZero();
   for (Vec3& w : state.w_W) w.setZero();
   BodyForces f;

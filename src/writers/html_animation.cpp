@@ -90,9 +90,29 @@ std::string json_string(const std::string& s) {
   return nlohmann::json(s).dump();
 }
 
+// `"xLabel":..,"yLabel":..,"x":[..],"y":[..]` of a curve (7 significant digits).
+void put_curve(std::string& j, const Curve& curve) {
+  j += "\"xLabel\":";
+  j += json_string(curve.x_label);
+  j += ",\"yLabel\":";
+  j += json_string(curve.y_label);
+  j += ",\"x\":[";
+  for (std::size_t i = 0; i < curve.x.size(); ++i) {
+    if (i) j += ',';
+    put_general(j, curve.x[i], 7);
+  }
+  j += "],\"y\":[";
+  for (std::size_t i = 0; i < curve.y.size(); ++i) {
+    if (i) j += ',';
+    put_general(j, curve.y[i], 7);
+  }
+  j += ']';
+}
+
 std::string data_json(const std::string& title, const FrameAxis& axis, const Model& model,
                       const std::vector<Frame>& frames, const Curve& curve,
-                      const std::vector<ChartMark>& marks) {
+                      const HtmlAnnotations& notes) {
+  const std::vector<ChartMark>& marks = notes.marks;
   const std::size_t n = model.bodies.size();
   // Positions are rounded to 1e-5 of the scene's extent (1e-6 m at the least).
   double extent = 0;
@@ -191,21 +211,9 @@ std::string data_json(const std::string& title, const FrameAxis& axis, const Mod
     }
     j += ']';
   }
-  j += "]},\"curve\":{\"xLabel\":";
-  j += json_string(curve.x_label);
-  j += ",\"yLabel\":";
-  j += json_string(curve.y_label);
-  j += ",\"x\":[";
-  for (std::size_t i = 0; i < curve.x.size(); ++i) {
-    if (i) j += ',';
-    put_general(j, curve.x[i], 7);
-  }
-  j += "],\"y\":[";
-  for (std::size_t i = 0; i < curve.y.size(); ++i) {
-    if (i) j += ',';
-    put_general(j, curve.y[i], 7);
-  }
-  j += "],\"marks\":[";
+  j += "]},\"curve\":{";
+  put_curve(j, curve);
+  j += ",\"marks\":[";
   for (std::size_t i = 0; i < marks.size(); ++i) {
     j += i ? ",{\"x\":" : "{\"x\":";
     put_general(j, marks[i].x, 7);
@@ -213,7 +221,13 @@ std::string data_json(const std::string& title, const FrameAxis& axis, const Mod
     put_general(j, marks[i].y, 7);
     j += ",\"label\":" + json_string(marks[i].label) + "}";
   }
-  j += "]}}";
+  j += "]},\"curves\":[";
+  for (std::size_t i = 0; i < notes.curves.size(); ++i) {
+    j += i ? ",{" : "{";
+    put_curve(j, notes.curves[i]);
+    j += '}';
+  }
+  j += "]}";
   return j;
 }
 
@@ -242,6 +256,10 @@ void write_html_animation(const std::string& path, const std::string& title, con
   if (frames.empty()) throw InputError(model.source, "frames", "at least one frame is needed");
   check_frames(model, frames);
   check_curve(model, frames, curve);
+  for (const Curve& c : notes.curves) {
+    if (c.x.empty()) throw InputError(model.source, "curve " + c.y_label, "has no points");
+    check_curve(model, frames, c);
+  }
 
   std::string libs;
   const struct {
@@ -264,7 +282,7 @@ void write_html_animation(const std::string& path, const std::string& title, con
       throw InputError(model.source, "chart mark '" + m.label + "'", "must be finite");
     }
   }
-  const std::string data = script_safe(data_json(title, axis, model, frames, curve, notes.marks));
+  const std::string data = script_safe(data_json(title, axis, model, frames, curve, notes));
   std::string page;
   page.reserve(tmpl.size() + libs.size() + data.size() + title.size());
   // Each placeholder is looked up in the template only, never in what was inserted.

@@ -18,10 +18,12 @@ struct ChartMark {
 };
 
 /// What the page says besides the motion: a red banner for a run that did not finish
-/// (empty: none) and labelled points on the chart.
+/// (empty: none), labelled points on the chart, and further curves charted below it (a
+/// chamber's pressure), each with one point per frame.
 struct HtmlAnnotations {
   std::string warning;
   std::vector<ChartMark> marks;
+  std::vector<Curve> curves;
 };
 
 /// How the page shows Frame::t (the slider's abscissa): `label` with its unit in brackets and

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "probes/recorder.hpp"
 #include "writers/atomic_write.hpp"
 
 namespace finseg {
@@ -64,6 +65,19 @@ void check_file_names(const Scene& scene) {
     add(p.name + ".csv", k);
     if (p.pairs) add(p.name + "_pairs.csv", k);
     if (scene.outputs.plot && p.kind == ProbeKind::Drive) add(p.name + ".png", k);
+  }
+  // Each chamber's table (probes/recorder.hpp): chamber_<name>.csv and .png.
+  for (std::size_t c = 0; c < scene.model.chambers.size(); ++c) {
+    const std::string field = fmt::format("chambers[{}].name", c);
+    const std::string stem = chamber_table_name(scene.model.chambers[c]);
+    check_name(stem, scene.file, field);
+    for (const std::string& file : {stem + ".csv", stem + ".png"}) {
+      if (file.ends_with(".png") && !scene.outputs.plot) continue;
+      if (!names.insert(file).second) {
+        throw InputError(scene.file, field,
+                         fmt::format("its output file {} is also another output's", file));
+      }
+    }
   }
 }
 

@@ -67,6 +67,41 @@ Curve drive_curve(const ProbeTable& t) {
   return c;
 }
 
+// How the run's abscissa is shown on charts and the HTML slider (a pull in mm).
+FrameAxis abscissa_axis(const std::string& abscissa) {
+  if (abscissa == "t_s") return {"time [s]", 1};
+  if (abscissa == "load_scale") return {"load scale [-]", 1};
+  return {"pull displacement [mm]", 1e3};
+}
+
+// A chamber's pressure against the run's abscissa.
+Curve chamber_curve(const ProbeTable& t, const std::string& abscissa) {
+  const FrameAxis axis = abscissa_axis(abscissa);
+  Curve c{axis.label, t.name + " pressure [Pa]", {}, {}};
+  for (const auto& r : t.rows) {
+    c.x.push_back(axis.scale * r[0]);
+    c.y.push_back(r[1]);
+  }
+  return c;
+}
+
+// Largest value of every column of a chamber's table, and where the pressure peaked.
+void add_chamber_peaks(const ProbeTable& t, nlohmann::json& j) {
+  nlohmann::json peak;
+  std::size_t at = 0;
+  for (std::size_t c = 1; c < t.columns.size(); ++c) {
+    double largest = t.rows[0][c];
+    for (std::size_t r = 0; r < t.rows.size(); ++r) {
+      if (t.rows[r][c] <= largest) continue;
+      largest = t.rows[r][c];
+      if (t.columns[c] == "pressure_Pa") at = r;
+    }
+    peak[t.columns[c]] = largest;
+  }
+  j["peak"] = peak;
+  j["peak_pressure_at"] = t.rows[at][0];  // in the abscissa's unit (t_s: s)
+}
+
 std::vector<PlotMarker> phase_markers(const DeploymentPhases& p) {
   std::vector<PlotMarker> m;
   if (std::isfinite(p.initial_deformation))
@@ -251,6 +286,7 @@ nlohmann::json probe_summary(const ProbeTable& t, double deployed_at) {
     j["final"] = f;
   }
   if (t.kind == ProbeKind::Drive) add_drive_peaks(t, deployed_at, j);
+  if (t.kind == ProbeKind::Chamber) add_chamber_peaks(t, j);
   return j;
 }
 
@@ -316,10 +352,15 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   }
   const std::string title = run_title(scene);
   const std::string warning = unfinished_warning(stats);
+  std::vector<Curve> chamber_curves;
+  for (const ProbeTable& t : rec.tables()) {
+    if (t.kind == ProbeKind::Chamber) chamber_curves.push_back(chamber_curve(t, rec.abscissa()));
+  }
   if (o.plot) {
     for (const ProbeTable& t : rec.tables()) {
-      if (t.kind != ProbeKind::Drive) continue;
-      const Curve c = drive_curve(t);
+      if (t.kind != ProbeKind::Drive && t.kind != ProbeKind::Chamber) continue;
+      const Curve c =
+          t.kind == ProbeKind::Drive ? drive_curve(t) : chamber_curve(t, rec.abscissa());
       PlotSpec spec;
       spec.title = title + ": " + t.name;
       spec.x_label = c.x_label;
@@ -343,12 +384,12 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   if (o.html && !rec.frames().empty()) {
     const Curve curve = first_drive ? drive_curve(*first_drive) : Curve{};
     // The slider shows a pull in mm, as the chart beside it.
-    const FrameAxis axis = rec.abscissa() == "t_s" ? FrameAxis{"time [s]", 1}
-                           : rec.abscissa() == "load_scale"
-                               ? FrameAxis{"load scale [-]", 1}
-                               : FrameAxis{"pull displacement [mm]", 1e3};
+    const FrameAxis axis = abscissa_axis(rec.abscissa());
     optional_output(report, "animation.html", [&] {
-      HtmlAnnotations notes{warning, {}};
+      HtmlAnnotations notes{warning, {}, {}};
+      for (const Curve& c : chamber_curves) {
+        if (c.x.size() == rec.frames().size()) notes.curves.push_back(c);
+      }
       if (first_drive && curve.x.size() == rec.frames().size()) {
         notes.marks = peak_marks(probes[first_drive->name]);
       }

@@ -69,7 +69,8 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   label { color: var(--muted); font-size: 13px; white-space: nowrap; }
   select { font: inherit; padding: 4px 6px; border-radius: 6px; border: 1px solid var(--line); }
   #status { font: 13px "DejaVu Sans Mono", monospace; min-width: 150px; text-align: right; }
-  #side.hidden { display: none; }
+  #side.hidden, .hidden { display: none; }
+  .extrabox { position: relative; flex: 1; min-height: 180px; margin-top: 10px; }
 </style>
 </head>
 <body>
@@ -89,6 +90,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     <h2 id="charttitle"></h2>
     <div id="chartbox"><canvas id="chart"></canvas></div>
     <div id="current"></div>
+    <div id="extracharts"></div>
   </div>
 </main>
 <div class="card" id="controls">
@@ -317,6 +319,7 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
     if (chart) chart.resize();
+    (extras || []).forEach(function (e) { e.chart.resize(); });
     render();
   }
   // Self-test mode (URL ?selftest=1, used by the browser test): after each render, count
@@ -343,8 +346,10 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
   var xl = splitLabel(cv.xLabel), yl = splitLabel(cv.yLabel);
   var chart = null, xDec = 3, yDec = 3;
   var currentEl = document.getElementById("current");
+  var extras = [];  // further curves below the chart (chamber pressures)
   if (!hasCurve) {
-    document.getElementById("side").classList.add("hidden");
+    if (D.curves.length === 0) document.getElementById("side").classList.add("hidden");
+    document.getElementById("chartbox").classList.add("hidden");
   } else if (typeof Chart === "undefined") {
     fail("Chart.js did not load");
     return;
@@ -418,6 +423,40 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
     });
   }
 
+  if (D.curves.length > 0 && typeof Chart === "undefined") {
+    fail("Chart.js did not load");
+    return;
+  }
+  D.curves.forEach(function (c) {
+    var box = document.createElement("div"), h = document.createElement("h2");
+    var el = splitLabel(c.yLabel), xel = splitLabel(c.xLabel);
+    h.textContent = (el.name || "y") + " against " + (xel.name || "x");
+    box.className = "extrabox";
+    var canvas = document.createElement("canvas");
+    box.appendChild(canvas);
+    var host = document.getElementById("extracharts");
+    host.appendChild(h); host.appendChild(box);
+    var pts = c.x.map(function (x, j) { return { x: x, y: c.y[j] }; });
+    var ch = new Chart(canvas.getContext("2d"), {
+      type: "scatter",
+      data: { datasets: [
+        { label: c.yLabel, data: pts, showLine: true, borderColor: "#2ca02c",
+          backgroundColor: "#2ca02c", borderWidth: 2, pointRadius: 0, tension: 0 },
+        { label: "current frame", data: [pts[0]], showLine: false, pointRadius: 6,
+          pointBackgroundColor: "#d62728", pointBorderColor: "#ffffff", pointBorderWidth: 2 }
+      ] },
+      options: {
+        animation: false, responsive: true, maintainAspectRatio: false,
+        scales: {
+          x: { type: "linear", title: { display: true, text: c.xLabel, font: { size: 13 } } },
+          y: { title: { display: true, text: c.yLabel, font: { size: 13 } } }
+        },
+        plugins: { legend: { display: false } }
+      }
+    });
+    extras.push({ chart: ch, pts: pts });
+  });
+
   // ---- frames and playback ----------------------------------------------------------
   var slider = document.getElementById("slider"), playBtn = document.getElementById("play");
   var clock = document.getElementById("clock");
@@ -447,6 +486,10 @@ inline constexpr const char* kPageTemplate = R"FINSEG_PAGE(<!DOCTYPE html>
       currentEl.innerHTML = xl.name + " <b>" + p.x.toFixed(xDec) + "</b> " + xl.unit +
         "<br>" + yl.name + " <b>" + p.y.toFixed(yDec) + "</b> " + yl.unit;
     }
+    extras.forEach(function (e) {
+      e.chart.data.datasets[1].data = [e.pts[Math.min(n, e.pts.length - 1)]];
+      e.chart.update("none");
+    });
     statusEl.textContent = "frame " + (n + 1) + " / " + N;
     statusEl.setAttribute("data-frame", String(n));
     render();

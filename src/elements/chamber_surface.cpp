@@ -1,0 +1,198 @@
+#include "elements/chamber_surface.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "core/error.hpp"
+#include "elements/assembler.hpp"
+#include "elements/chamber_volume.hpp"
+
+namespace finseg {
+namespace {
+
+Vec3 vertex_W(const State& s, const SurfaceVertex& v) {
+  return v.body < 0 ? v.x : Vec3(s.p_W[v.body] + s.R_WB[v.body] * v.x);
+}
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Node of each point: points closer than tol are one node (sweep along x, n log n for
+// spread-out points).
+std::vector<int> cluster(const std::vector<Vec3>& x, double tol) {
+  std::vector<int> order(x.size()), parent(x.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return x[a].x() < x[b].x(); });
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::size_t j = i + 1; j < order.size(); ++j) {
+      if (x[order[j]].x() - x[order[i]].x() > tol) break;
+      if ((x[order[i]] - x[order[j]]).norm() <= tol) {
+        parent[find_root(parent, order[i])] = find_root(parent, order[j]);
+      }
+    }
+  }
+  std::vector<int> node(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) node[i] = find_root(parent, static_cast<int>(i));
+  return node;
+}
+
+// Face corners lying strictly inside a plate's edges become fixed vertices of the plate (the
+// plate stays the same polygon), so that plate and faces meet edge to edge.
+void split_plate_edges(std::vector<SurfaceVertex>& v, std::vector<std::vector<int>>& loops,
+                       std::size_t first_plate, std::size_t face_corners, double tol) {
+  for (std::size_t l = first_plate; l < loops.size(); ++l) {
+    std::vector<int> out;
+    const std::vector<int> loop = loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 a = v[loop[k]].x, b = v[loop[(k + 1) % loop.size()]].x;
+      out.push_back(loop[k]);
+      std::vector<std::pair<double, Vec3>> inside;
+      for (std::size_t c = 0; c < face_corners; ++c) {
+        const Vec3& x = v[c].x;  // initial world position (set by the caller)
+        const double t = (x - a).dot(b - a) / (b - a).squaredNorm();
+        if (t * (b - a).norm() <= tol || (1 - t) * (b - a).norm() <= tol) continue;
+        if ((a + t * (b - a) - x).norm() > tol) continue;
+        if (std::none_of(inside.begin(), inside.end(),
+                         [&](const auto& q) { return (q.second - x).norm() <= tol; })) {
+          inside.push_back({t, x});
+        }
+      }
+      std::sort(inside.begin(), inside.end(),
+                [](const auto& p, const auto& q) { return p.first < q.first; });
+      for (const auto& q : inside) {
+        out.push_back(static_cast<int>(v.size()));
+        v.push_back({-1, q.second});
+      }
+    }
+    loops[l] = out;
+  }
+}
+
+struct HalfEdge {
+  int loop, from, to;  ///< vertex indices
+};
+
+}  // namespace
+
+void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
+                           const std::string& field) {
+  const State state = initial_state(model);
+  std::vector<SurfaceVertex> v;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> corners_B;
+  for (const ChamberFace& f : def.faces) {
+    std::vector<int> loop;
+    for (const Vec3& c_B : face_corners_B(model, f)) {
+      loop.push_back(static_cast<int>(v.size()));
+      // While building, x holds the initial world position; corners_B the body-frame point.
+      v.push_back({f.body, state.p_W[f.body] + state.R_WB[f.body] * c_B});
+      corners_B.push_back(c_B);
+    }
+    loops.push_back(loop);
+  }
+  const std::size_t face_corners = v.size();
+  for (const auto& plate : def.end_plates) {
+    std::vector<int> loop;
+    for (const Vec3& x : plate) {
+      loop.push_back(static_cast<int>(v.size()));
+      v.push_back({-1, x});
+    }
+    loops.push_back(loop);
+  }
+  split_plate_edges(v, loops, def.faces.size(), face_corners, tol);
+  std::vector<Vec3> x0(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) x0[i] = v[i].x;
+  const std::vector<int> node = cluster(x0, tol);
+  // Each edge u -> v must meet exactly one edge v' -> u' of another loop.
+  std::vector<HalfEdge> edges;
+  std::map<std::pair<int, int>, std::vector<int>> by_nodes;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    for (std::size_t k = 0; k < loops[l].size(); ++k) {
+      const int a = loops[l][k], b = loops[l][(k + 1) % loops[l].size()];
+      by_nodes[{node[a], node[b]}].push_back(static_cast<int>(edges.size()));
+      edges.push_back({static_cast<int>(l), a, b});
+    }
+  }
+  std::vector<std::vector<int>> bridges;
+  std::vector<int> patch_next(v.size(), -1);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const HalfEdge& h = edges[e];
+    const auto it = by_nodes.find({node[h.to], node[h.from]});
+    if (it == by_nodes.end() || it->second.size() != 1 ||
+        by_nodes[{node[h.from], node[h.to]}].size() != 1) {
+      const bool plate = h.loop >= static_cast<int>(def.faces.size());
+      throw InputError(
+          model.source,
+          plate ? fmt::format("{}.end_plates[{}]", field, h.loop - def.faces.size())
+                : fmt::format("{}.faces[{}]", field, h.loop),
+          fmt::format("its edge from ({:.6g}, {:.6g}, {:.6g}) to ({:.6g}, {:.6g}, {:.6g}) m does "
+                      "not meet exactly one edge of another face end to end (a corner inside "
+                      "another face's edge, or more than two faces on one edge): a chamber's "
+                      "faces must meet corner to corner",
+                      x0[h.from].x(), x0[h.from].y(), x0[h.from].z(), x0[h.to].x(), x0[h.to].y(),
+                      x0[h.to].z()));
+    }
+    const int t = it->second.front();
+    if (t < static_cast<int>(e)) continue;  // each pair once
+    // Edge a -> b and its twin b' -> a': the strip between them runs b, a, a', b'.
+    const int a = h.from, b = h.to, b2 = edges[t].from, a2 = edges[t].to;
+    bridges.push_back({b, a, a2, b2});
+    patch_next[a2] = a;  // the corner patches run the strips' short edges backwards
+    patch_next[b] = b2;
+  }
+  std::vector<bool> seen(v.size(), false);
+  for (std::size_t s = 0; s < v.size(); ++s) {
+    if (patch_next[s] < 0 || seen[s]) continue;
+    std::vector<int> patch;
+    for (int c = static_cast<int>(s); !seen[c] && c >= 0; c = patch_next[c]) {
+      seen[c] = true;
+      patch.push_back(c);
+    }
+    if (patch.size() >= 3) bridges.push_back(patch);
+  }
+  for (std::size_t i = 0; i < face_corners; ++i) v[i].x = corners_B[i];
+  def.vertices = v;
+  def.loops = loops;
+  def.loops.insert(def.loops.end(), bridges.begin(), bridges.end());
+}
+
+double surface_volume(const State& state, const ChamberDef& def, std::vector<Vec3>* gradient) {
+  std::vector<Vec3> x(def.vertices.size());
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = vertex_W(state, def.vertices[i]);
+  if (gradient) gradient->assign(x.size(), Vec3::Zero());
+  double vol = 0;
+  for (const auto& loop : def.loops) {
+    const Vec3& a = x[loop[0]];
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      const Vec3& b = x[loop[k]];
+      const Vec3& c = x[loop[k + 1]];
+      vol += a.dot(b.cross(c)) / 6;
+      if (!gradient) continue;
+      (*gradient)[loop[0]] += b.cross(c) / 6;
+      (*gradient)[loop[k]] += c.cross(a) / 6;
+      (*gradient)[loop[k + 1]] += a.cross(b) / 6;
+    }
+  }
+  return vol;
+}
+
+void add_surface_pressure(const State& state, const ChamberDef& def, double p, Assembler& as) {
+  std::vector<Vec3> g;
+  surface_volume(state, def, &g);
+  for (std::size_t i = 0; i < def.vertices.size(); ++i) {
+    const SurfaceVertex& v = def.vertices[i];
+    if (v.body < 0) continue;
+    Wrench<double> w;
+    w.f_W = p * g[i];
+    w.tau_W = (state.R_WB[v.body] * v.x).cross(w.f_W);
+    as.add(v.body, w);
+  }
+}
+
+}  // namespace finseg
