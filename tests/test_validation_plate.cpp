@@ -135,6 +135,19 @@ TEST(PlateValidation, TheSamePlateReadFromAFoldFileThroughASceneGivesTheSameAnsw
       InputError);
 }
 
+// examples/plate: the README's simply supported plate, 2.5 Pa: Navier's series gives the
+// centre 0.00406235 q a^4 / D down.
+TEST(PlateValidation, ExamplePlateSceneMatchesNavier) {
+  const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/plate/plate.yaml");
+  State s = initial_state(scene.model);
+  const SolverStats st = run_solver(scene.model, s, scene.solver, nullptr);
+  ASSERT_EQ(st.status, "ok") << st.message;
+  const MaterialPoint c = locate_material_point(scene.model, 0.05, 0.05);
+  const double w = -(s.p_W[c.body] + s.R_WB[c.body] * c.r_B).z();
+  const double D = 1e9 * 1e-9 / (12 * (1 - 0.09));
+  EXPECT_NEAR(w / (0.00406235 * 2.5 * 1e-4 / D), 1, 2e-3) << w;
+}
+
 TEST(SegmentMesh, FacesMeetSideToSideAndCoverThePattern) {
   // A triangle, a quadrilateral and a pentagon sharing sides: every pattern edge gets n
   // cell sides, cells cover each face exactly, and every interior side has two cells.

@@ -104,7 +104,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   m.source = source;
   Vec2 lo = mesh.flat_m.front(), hi = lo;
   for (const Vec2& v : mesh.flat_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  m.sheet = {hi.x() - lo.x(),     hi.y() - lo.y(),    spec.thickness,
+  m.sheet = {hi.x() - lo.x(),     hi.y() - lo.y(),    spec.thickness, lo,
              spec.youngs_modulus, spec.poisson_ratio, spec.density};
 
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {

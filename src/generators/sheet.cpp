@@ -126,7 +126,7 @@ Mat3 rot_y(double a) {
 Model build_sheet_model(const SheetSpec& spec) {
   validate_spec(spec);
   Model m;
-  m.sheet = {spec.length,         spec.width,         spec.thickness,
+  m.sheet = {spec.length,         spec.width,         spec.thickness, Vec2::Zero(),
              spec.youngs_modulus, spec.poisson_ratio, spec.density};
 
   // Panels, their cells and the joints along the sheet.
@@ -249,9 +249,11 @@ MaterialPoint locate_material_point(const Model& model, double s, double y) {
       return {static_cast<int>(i), Vec3(r.x(), r.y(), 0)};
     }
   }
-  throw InputError(model.source, "at",
-                   fmt::format("material point ({}, {}) m lies outside the sheet [0, {}] x [0, {}]",
-                               s, y, model.sheet.length, model.sheet.width));
+  const Vec2& o = model.sheet.origin_M;
+  throw InputError(
+      model.source, "at",
+      fmt::format("material point ({}, {}) m lies outside the sheet [{}, {}] x [{}, {}]", s, y,
+                  o.x(), o.x() + model.sheet.length, o.y(), o.y() + model.sheet.width));
 }
 
 }  // namespace finseg

@@ -99,7 +99,10 @@ struct ProbeDef {
 /// Description of the flat sheet a model was cut from (used by writers and probes).
 struct SheetInfo {
   double length = 0, width = 0, thickness = 0;  ///< m
-  double youngs_modulus = 0;                    ///< Pa
+  /// Lower-left corner of the flat sheet's bounding box in material coordinates, m: the
+  /// sheet spans [origin, origin + (length, width)] ((0, 0) for the generators' strips).
+  Vec2 origin_M = Vec2::Zero();
+  double youngs_modulus = 0;  ///< Pa
   double poisson_ratio = 0;
   double density = 0;  ///< kg/m^3
 };

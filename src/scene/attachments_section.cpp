@@ -32,8 +32,9 @@ MaterialPoint read_location(const Fields& f, const Model& m) {
   if (f.has("at")) {
     if (f.has("body") || f.has("point")) f.fail("at", "give either at: {s, y} or body (+ point)");
     const Fields at(f.node("at"), f.context("at"), {"s", "y"});
-    const double s = at.number("s", interval(0, m.sheet.length, false, false, "m"));
-    const double y = at.number("y", interval(0, m.sheet.width, false, false, "m"));
+    const Vec2& o = m.sheet.origin_M;
+    const double s = at.number("s", interval(o.x(), o.x() + m.sheet.length, false, false, "m"));
+    const double y = at.number("y", interval(o.y(), o.y() + m.sheet.width, false, false, "m"));
     MaterialPoint p;
     in_scene_file(
         f.context().file, [&] { p = locate_material_point(m, s, y); },
