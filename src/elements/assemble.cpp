@@ -5,6 +5,7 @@
 #include "elements/chamber_gas.hpp"
 #include "elements/crease_history.hpp"
 #include "elements/force_elements.hpp"
+#include "elements/plate_cells.hpp"
 #include "elements/pressure.hpp"
 
 namespace finseg {
@@ -73,6 +74,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   out.potential_energy = 0;
   Assembler as(model, state, out, jac);
   add_force_elements(model, state, as);
+  add_plate_cells(model, state, as);
   add_loads_and_gravity(model, state, as);
   add_pressure_loads(model, state, as);
   add_chamber_pressures(model, state, as);

@@ -119,6 +119,16 @@ class Assembler {
     out_.tau_W[i] += w.tau_W;
   }
 
+  /// Adds d(couple on body a)/d(rotation of body b), world frame, to the Jacobian (no-op
+  /// when either body is fixed or no Jacobian is wanted).
+  void add_rotation_block(int a, int b, const Mat3& dtau_dphi) {
+    const int ra = model_.dof_of_body[a], cb = model_.dof_of_body[b];
+    if (!jac_ || ra < 0 || cb < 0) return;
+    Mat6 block = Mat6::Zero();
+    block.bottomRightCorner<3, 3>() = dtau_dphi;
+    jac_->dq_blocks.add(ra, cb, block);
+  }
+
   /// Adds potential energy that has no force of its own (bookkeeping).
   void add_energy(double e) { out_.potential_energy += e; }
 

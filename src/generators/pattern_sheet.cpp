@@ -13,6 +13,7 @@
 #include "core/text.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/scaled.hpp"
+#include "generators/plate_cell_fit.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/segment_mesh.hpp"
 
@@ -83,6 +84,32 @@ std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheet
   return law;
 }
 
+// The sides of a plate joint as the two cells' curvature fits see them: the vector to the
+// neighbour's centroid, or, next to a clamped cell, to the foot point on the side (the clamp
+// holds the rotation there), whose joint is then the free cell's alone.
+void add_cell_sides(const CellLink& l, const ElementDef& e, int element, const Model& m,
+                    std::vector<std::vector<CellSideGeometry>>& cell_sides) {
+  const Vec2 across(e.R_outer_F(0, 0), e.R_outer_F(1, 0));
+  const Vec2 P(e.c_outer_B.x() + m.bodies[l.left].centroid_M->x(),
+               e.c_outer_B.y() + m.bodies[l.left].centroid_M->y());
+  for (const int side : {0, 1}) {
+    const int c = side == 0 ? l.left : l.right, o = side == 0 ? l.right : l.left;
+    const Vec2 c_M = *m.bodies[c].centroid_M;
+    CellSideGeometry g;
+    g.side = {element, e.R_outer_F, side == 0 ? 1.0 : -1.0};
+    g.weight = e.K[3];  // twist; bending K[4] is the same on plate joints
+    g.crease = e.crease >= 0;
+    g.across_M = across;
+    if (m.bodies[o].fixed) {
+      g.d_M = across.dot(P - c_M) * across;
+      g.share = 1;
+    } else {
+      g.d_M = *m.bodies[o].centroid_M - c_M;
+    }
+    cell_sides[c].push_back(g);
+  }
+}
+
 }  // namespace
 
 Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
@@ -133,6 +160,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     m.bodies.push_back(b);
   }
 
+  std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
   for (const CellLink& l : mesh.links) {
     const BodyDef &L = m.bodies[l.left], &R = m.bodies[l.right];
     const Vec2 a = mesh.flat_m[l.a], b = mesh.flat_m[l.b];
@@ -165,7 +193,15 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
         e.name = fmt::format("crease{}_c{}_c{}", l.pattern_edge + 1, l.left, l.right);
       }
     }
+    add_cell_sides(l, e, static_cast<int>(m.elements.size()), m, cell_sides);
     m.elements.push_back(e);
+  }
+  const double D = spec.youngs_modulus * std::pow(spec.thickness, 3) /
+                   (12 * (1 - spec.poisson_ratio * spec.poisson_ratio));
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+    if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
+    m.plate_cells.push_back(plate_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),
+                                                  cell_sides[c], D, spec.poisson_ratio));
   }
   m.finalize_dofs();
   return m;

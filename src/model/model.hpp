@@ -10,6 +10,7 @@
 #include "model/chamber_def.hpp"
 #include "model/contact_def.hpp"
 #include "model/crease_def.hpp"
+#include "model/plate_cell_def.hpp"
 #include "model/pressure_def.hpp"
 #include "model/segment_shape.hpp"
 
@@ -113,6 +114,8 @@ struct Model {
   SheetInfo sheet;
   std::vector<BodyDef> bodies;
   std::vector<ElementDef> elements;
+  /// Curvature corrections of plate cells (sheets cut from patterns; docs/stiffness.md).
+  std::vector<PlateCellDef> plate_cells;
   std::vector<CreaseDef> creases;
   std::vector<LoadDef> loads;
   std::vector<DriveDef> drives;

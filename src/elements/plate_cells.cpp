@@ -1,0 +1,67 @@
+#include "elements/plate_cells.hpp"
+
+#include <vector>
+
+#include "core/so3.hpp"
+#include "elements/assembler.hpp"
+
+namespace finseg {
+namespace {
+
+// World orientation of an element's frame F (on its outer body) and its rotation vector
+// theta = log(R_FE), F components.
+struct SideRotation {
+  Mat3 R_WF;
+  Vec3 theta_F;
+};
+
+SideRotation side_rotation(const ElementDef& e, const State& s) {
+  const Mat3 R_WE = s.R_WB[e.inner] * e.R_inner_E;
+  const Mat3 R_WF = s.R_WB[e.outer] * e.R_outer_F;
+  return {R_WF, so3_log<double>(R_WF.transpose() * R_WE)};
+}
+
+}  // namespace
+
+void add_plate_cells(const Model& model, const State& state, Assembler& as) {
+  std::vector<SideRotation> rot;
+  for (const PlateCellDef& cell : model.plate_cells) {
+    const int n = static_cast<int>(cell.sides.size());
+    rot.clear();
+    Eigen::VectorXd theta(2 * n);
+    for (int k = 0; k < n; ++k) {
+      const PlateCellSide& side = cell.sides[k];
+      rot.push_back(side_rotation(model.elements[side.element], state));
+      theta.segment<2>(2 * k) = (side.sign * side.R_BF * rot[k].theta_F).head<2>();
+    }
+    const Eigen::VectorXd m = cell.Q * theta;
+    as.add_energy(0.5 * theta.dot(m));
+    // dE = sum_k m_k . dTheta_k, dTheta_k = sign R_BF R_WF^T (dphi_inner - dphi_outer).
+    std::vector<Mat3> to_theta(n);  // dTheta_k (padded to 3) / dphi_inner, world
+    for (int k = 0; k < n; ++k) {
+      const PlateCellSide& side = cell.sides[k];
+      const ElementDef& e = model.elements[side.element];
+      to_theta[k] = side.sign * side.R_BF * rot[k].R_WF.transpose();
+      const Vec3 tau = -to_theta[k].transpose() * Vec3(m[2 * k], m[2 * k + 1], 0);
+      as.add(e.inner, {Vec3::Zero(), tau});
+      as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
+    }
+    if (!as.want_jacobian()) continue;
+    for (int k = 0; k < n; ++k) {
+      const ElementDef& ek = model.elements[cell.sides[k].element];
+      for (int j = 0; j < n; ++j) {
+        const ElementDef& ej = model.elements[cell.sides[j].element];
+        Mat3 q = Mat3::Zero();
+        q.topLeftCorner<2, 2>() = cell.Q.block<2, 2>(2 * k, 2 * j);
+        // d tau_inner,k / d phi_inner,j.
+        const Mat3 K = -to_theta[k].transpose() * q * to_theta[j];
+        as.add_rotation_block(ek.inner, ej.inner, K);
+        as.add_rotation_block(ek.inner, ej.outer, -K);
+        as.add_rotation_block(ek.outer, ej.inner, -K);
+        as.add_rotation_block(ek.outer, ej.outer, K);
+      }
+    }
+  }
+}
+
+}  // namespace finseg

@@ -1,0 +1,68 @@
+#include "generators/plate_cell_fit.hpp"
+
+#include <Eigen/Eigenvalues>
+
+namespace finseg {
+namespace {
+
+using Mat23 = Eigen::Matrix<double, 2, 3>;
+
+// In-plane rotation across d for the uniform curvature kappa = (k_xx, k_yy, k_xy) of
+// w = 1/2 k_xx x^2 + k_xy x y + 1/2 k_yy y^2: rotation vector (w_y, -w_x).
+Mat23 rotation_of_curvature(const Vec2& d) {
+  Mat23 B;
+  B << 0, d.y(), d.x(), -d.x(), 0, -d.y();
+  return B;
+}
+
+}  // namespace
+
+PlateCellDef plate_cell_correction(int body, double area,
+                                   const std::vector<CellSideGeometry>& sides, double D,
+                                   double nu) {
+  PlateCellDef cell;
+  cell.body = body;
+  Mat3 G = Mat3::Zero(), M = Mat3::Zero();
+  std::vector<Eigen::Matrix<double, 3, 2>> Wk;  // sum_k w_k B_k^T Theta_k
+  for (const CellSideGeometry& side : sides) {
+    const Mat23 B = rotation_of_curvature(side.d_M);
+    if (side.crease) {
+      const Eigen::RowVector3d b = side.across_M.transpose() * B;  // twist about the normal
+      M += side.share * side.weight * b.transpose() * b;
+      continue;
+    }
+    G += side.weight * B.transpose() * B;
+    M += side.share * side.weight * B.transpose() * B;
+    Wk.push_back(side.weight * B.transpose());
+    cell.sides.push_back(side.side);
+  }
+  Eigen::MatrixXd W(3, 2 * Wk.size());
+  for (std::size_t k = 0; k < Wk.size(); ++k) W.middleCols<2>(2 * k) = Wk[k];
+  Mat3 C;
+  C << 1, nu, 0, nu, 1, 0, 0, 0, 2 * (1 - nu);
+  const Mat3 S = area * D * C - M;  // what the joints miss, per uniform curvature
+  // Fit kappa = G^+ W Theta; the null space of G is condensed out of S.
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(G);
+  const double tol = 1e-10 * eig.eigenvalues().cwiseAbs().maxCoeff();
+  Mat3 G_pinv = Mat3::Zero();
+  Eigen::MatrixXd N(3, 0);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 v = eig.eigenvectors().col(i);
+    if (eig.eigenvalues()[i] > tol) {
+      G_pinv += v * v.transpose() / eig.eigenvalues()[i];
+    } else {
+      N.conservativeResize(3, N.cols() + 1);
+      N.col(N.cols() - 1) = v;
+    }
+  }
+  Mat3 S_eff = S;
+  if (N.cols() > 0) {
+    const Eigen::MatrixXd SN = S * N;
+    S_eff -= SN * (N.transpose() * SN).inverse() * SN.transpose();
+  }
+  const Eigen::MatrixXd P = G_pinv * W;
+  cell.Q = P.transpose() * S_eff * P;
+  return cell;
+}
+
+}  // namespace finseg

@@ -1,0 +1,31 @@
+// The curvature correction of one plate cell (docs/stiffness.md, "Cell curvature
+// correction"): from the geometry of its sides, the matrix Q of its energy.
+#pragma once
+
+#include <vector>
+
+#include "model/plate_cell_def.hpp"
+
+namespace finseg {
+
+/// One side of a cell, on the flat sheet.
+struct CellSideGeometry {
+  PlateCellSide side;
+  Vec2 d_M = Vec2::Zero();  ///< cell centroid -> neighbour's centroid (or the clamped side's
+                            ///< foot point), m
+  double weight = 0;        ///< the joint's rotational stiffness about both in-plane axes, N m
+  double share = 0.5;       ///< part of the joint's energy that is this cell's (1 at a clamp)
+  /// A crease side: its fold is the crease law's, so it is no measurement of the curvature;
+  /// only its twist spring (about `across_M`, the side's normal) counts in the joints' energy.
+  bool crease = false;
+  Vec2 across_M = Vec2::Zero();
+};
+
+/// Q such that, for every uniform curvature, joints plus correction store Kirchhoff's energy
+/// area * 1/2 kappa^T C kappa, C = D [[1, nu, 0], [nu, 1, 0], [0, 0, 2 (1 - nu)]]: the cell's
+/// curvature is fitted to its sides' rotations (weighted least squares), components the
+/// sides do not see are condensed out (free, as at a free edge).
+PlateCellDef plate_cell_correction(int body, double area,
+                                   const std::vector<CellSideGeometry>& sides, double D, double nu);
+
+}  // namespace finseg
