@@ -3,6 +3,7 @@
 // and DIR/manifest.json (docs/scene.md, "Run outputs"; docs/state-file.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "probes/recorder.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
+#include "scene/state_start.hpp"
 #include "solvers/stop_request.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/checkpoint.hpp"
@@ -34,7 +36,7 @@ using Clock = std::chrono::steady_clock;
 
 struct RunOptions {
   std::string scene, out, state_file;
-  bool quiet = false, resume = false;
+  bool quiet = false, resume = false, fold = false;
   double checkpoint_every = 30;  // wall seconds between checkpoints (0: every output)
   double progress_every = 5;     // wall seconds between progress lines off a terminal
   std::vector<std::string> set;  // --set KEY.PATH=VALUE
@@ -111,12 +113,32 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
     }
     return snap.state;
   }
-  if (!o.state_file.empty()) {
-    State s = read_state_file(o.state_file, scene.model).state;
-    s.solver = SolverMemory{};  // a fresh run from those poses, with the scene's own steps
-    return s;
-  }
   return initial_state(scene.model);
+}
+
+// A run from a state file is a fresh run whose initial configuration is that state's
+// (docs/state-file.md): its poses, crease history and contact anchors, drives starting from
+// where their points are.
+void start_scene_from_state_file(const RunOptions& o, Scene& scene, State& start) {
+  start = read_state_file(o.state_file, scene.model).state;
+  start.t = 0;
+  start.solver = SolverMemory{};
+  std::fill(start.drive_s.begin(), start.drive_s.end(), 0.0);
+  scene.model = model_starting_from(scene.model, start);
+}
+
+// `finseg run --fold`: the scene's folding (docs/folding.md) in place of its run.
+void make_folding_run(Scene& scene) {
+  if (!scene.folding) {
+    throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
+  }
+  const SolverSettings& solver = scene.folding_solver;
+  const double ramp = solver.kind == SolverKind::Static ? 1.0 : scene.folding->duration;
+  const State s0 = initial_state(scene.model);
+  std::vector<double> fold0;
+  for (const ElementHistory& h : s0.history) fold0.push_back(h.fold_angle);
+  scene.model = folding_model(scene.model, fold0, scene.folding->fraction, ramp);
+  scene.solver = solver;
 }
 
 // Periodic checkpoints from the output callback; a checkpoint that cannot be written is a
@@ -163,13 +185,17 @@ void run_scene(const RunOptions& o) {
   if (o.threads > 0) set_force_element_threads(o.threads);
   std::vector<Override> overrides;
   for (const std::string& s : o.set) overrides.push_back(parse_override(s));
-  const Scene scene = read_scene(o.scene, overrides);
+  Scene scene = read_scene(o.scene, overrides);
   // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
-  // table or an override changed is refused.
-  const std::string hash = scene_inputs_hash(read_whole_file(o.scene), scene);
+  // table or an override changed is refused; a folding run's checkpoint is not its scene's.
+  const std::string hash =
+      scene_inputs_hash(read_whole_file(o.scene) + (o.fold ? "\n# finseg run --fold" : ""), scene);
+  if (o.fold) make_folding_run(scene);
+  State from_file;
+  if (!o.state_file.empty() && !o.resume) start_scene_from_state_file(o, scene, from_file);
   check_output_folder(o.out, scene);
   RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
-  State state = starting_state(o, scene, hash, rec);
+  State state = o.state_file.empty() || o.resume ? starting_state(o, scene, hash, rec) : from_file;
   // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
   // the step it would have tried next). summary.json keeps the scene's settings.
   SolverSettings settings = scene.solver;
@@ -236,6 +262,10 @@ void register_run(CLI::App& app) {
   run->add_option("--state", o->state_file,
                   "start from this state file instead of the scene's initial state "
                   "(docs/state-file.md)");
+  run->add_flag("--fold", o->fold,
+                "run the scene's folding: section instead (creases carried from flat to their "
+                "target angles; DIR/checkpoint.json is then the stowed state for --state; "
+                "docs/folding.md)");
   run->add_option("--checkpoint-every", o->checkpoint_every,
                   "wall seconds between checkpoints in DIR/checkpoint.json (0: every output)")
       ->check(CLI::NonNegativeNumber)

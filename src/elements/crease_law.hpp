@@ -2,7 +2,7 @@
 //
 // Angle convention (docs/crease-data.md). The element measures the exact signed fold angle
 // alpha (rad) of E relative to F about F's y axis, 0 for the flat sheet, unwrapped over
-// turns. A crease has a fold direction s = +1 or -1: the sign of
+// turns. A crease has a fold direction s = +1 or -1: CreaseDef::direction, or the sign of
 // CreaseDef::initial_fold_angle (+1 when that is 0). A law is written either
 //  - in the signed angle alpha itself (direction_relative() == false; LinearCreaseLaw,
 //    whose rest angle then carries the sign of the fold), or
@@ -59,8 +59,10 @@ class CreaseLaw {
   virtual std::vector<std::string> data_files() const { return {}; }
 };
 
-/// Fold direction of a crease: the sign of its initial fold angle, +1 when flat.
+/// Fold direction of a crease: CreaseDef::direction where given, else the sign of its
+/// initial fold angle, +1 when flat.
 inline double crease_direction(const CreaseDef& crease) {
+  if (crease.direction != 0) return crease.direction < 0 ? -1.0 : 1.0;
   return crease.initial_fold_angle < 0 ? -1.0 : 1.0;
 }
 

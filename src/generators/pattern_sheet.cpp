@@ -13,6 +13,7 @@
 #include "core/text.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/scaled.hpp"
+#include "elements/crease_laws/shifted.hpp"
 #include "generators/plate_cell_fit.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/segment_mesh.hpp"
@@ -82,6 +83,33 @@ std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheet
                     mountain ? "mountain" : "valley"));
   }
   return law;
+}
+
+// Fold angle a pattern gives edge `e` in the sheet's convention (the opposite sign of FOLD's):
+// edges_foldAngle, else the folded coordinates, else 0.
+double pattern_fold_angle(const CreasePattern& p, int e) {
+  if (p.has_fold_angles) return -p.edges[e].fold_angle;
+  return p.vertices_folded_m.empty() ? 0.0 : -measured_fold_angle(p, e);
+}
+
+// The crease on a side of pattern edge `e`: its share of the law, moved to rest at the
+// pattern's fold angle when asked; direction from the assignment (mountain: +1).
+CreaseDef pattern_crease(const CreasePattern& p, int e, std::shared_ptr<const CreaseLaw> law,
+                         const PatternSheetSpec& spec, double len, double initial) {
+  CreaseDef c;
+  c.initial_fold_angle = initial;
+  c.target_fold_angle = pattern_fold_angle(p, e);
+  const EdgeAssignment a = p.edges[e].assignment;
+  c.direction = a == EdgeAssignment::Mountain ? 1.0
+                : a == EdgeAssignment::Valley ? -1.0
+                                              : (c.target_fold_angle < 0 ? -1.0 : 1.0);
+  if (spec.laws_rest_at_pattern) {
+    const double target =
+        (law->direction_relative() ? crease_direction(c) : 1.0) * c.target_fold_angle;
+    law = std::make_shared<ShiftedCreaseLaw>(law, target - law->rest_angle(ElementHistory{}, 0));
+  }
+  c.law = std::make_shared<ScaledCreaseLaw>(law, len / spec.crease_law_length);
+  return c;
 }
 
 // The sides of a plate joint as the two cells' curvature fits see them: the vector to the
@@ -187,8 +215,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
         // The sheet's fold angle turns the right cell about the side's +y: FOLD's valley-
         // positive angle with the opposite sign (docs/fold.md).
         const double fold = folded ? -measured_fold_angle(p, l.pattern_edge) : 0.0;
-        m.creases.push_back(
-            {std::make_shared<ScaledCreaseLaw>(law, len / spec.crease_law_length), fold});
+        m.creases.push_back(pattern_crease(p, l.pattern_edge, law, spec, len, fold));
         e.crease = static_cast<int>(m.creases.size()) - 1;
         e.name = fmt::format("crease{}_c{}_c{}", l.pattern_edge + 1, l.left, l.right);
       }

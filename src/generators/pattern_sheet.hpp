@@ -24,6 +24,9 @@ struct PatternSheetSpec {
   /// `crease_law_length` (m); a cell side of length l carries the share l / that length.
   std::shared_ptr<const CreaseLaw> mountain_law, valley_law;
   double crease_law_length = 1.0;
+  /// True: each crease's law is shifted so that it rests at the crease's own fold angle in
+  /// the pattern (edges_foldAngle, else the folded coordinates); false: the law's own rest.
+  bool laws_rest_at_pattern = false;
   std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
   bool start_folded = true;      ///< start from the pattern's folded coordinates if any
   double damping_time = 0;       ///< stiffness-proportional damping C = damping_time K, s

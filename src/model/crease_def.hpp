@@ -12,6 +12,12 @@ class CreaseLaw;  // elements/crease_law.hpp
 struct CreaseDef {
   std::shared_ptr<const CreaseLaw> law;
   double initial_fold_angle = 0;  ///< rad, fold angle in the initial configuration
+  /// Fold direction +1 / -1 where known apart from the initial angle (a pattern's M or V on
+  /// a sheet that starts flat); 0: the sign of initial_fold_angle.
+  double direction = 0;
+  /// rad, signed like the fold angle: where folding by simulation takes the crease
+  /// (docs/folding.md); 0: the crease is not folded.
+  double target_fold_angle = 0;
 };
 
 }  // namespace finseg

@@ -124,6 +124,9 @@ struct Model {
   std::vector<ChamberDef> chambers;    ///< closed volumes of gas (docs/gas.md)
   ContactDef contact;
   Vec3 gravity_W = Vec3::Zero();  ///< m/s^2
+  /// N: a force that the static solver's tolerances scale with besides loads, gravity and
+  /// drives (the creases' pull when folding by simulation); 0: none.
+  double actuation_force = 0;
 
   /// Index of the 6-DOF block of each body in solver vectors, -1 for fixed bodies.
   std::vector<int> dof_of_body;

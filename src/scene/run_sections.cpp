@@ -60,6 +60,24 @@ SolverSettings read_solver_section(const Fields& root) {
   return s;
 }
 
+void read_folding_section(const Fields& root, Scene& scene) {
+  if (!root.has("folding")) return;
+  const Fields f(root.node("folding"), root.context("folding"), {"fraction", "duration", "solver"});
+  FoldingSpec s;
+  s.fraction = f.number("fraction", s.fraction, interval(0, 1, true, false));
+  s.duration = f.number("duration", s.duration, positive("s"));
+  scene.folding = s;
+  scene.folding_solver = read_solver_section(f);
+  bool any_target = false;
+  for (const CreaseDef& c : scene.model.creases)
+    any_target = any_target || c.target_fold_angle != 0;
+  if (!any_target) {
+    root.fail("folding",
+              "no crease has a target fold angle: folding needs a pattern with "
+              "edges_foldAngle or folded coordinates");
+  }
+}
+
 OutputSettings read_outputs_section(const Fields& root, const Model& m) {
   const Fields f(root.node("outputs"), root.context("outputs"), {"vtk", "html", "plot", "phases"});
   const bool pulled = !m.drives.empty();

@@ -44,6 +44,9 @@ void read_chambers(const Fields& root, Model& model);
 /// The `solver:` section.
 SolverSettings read_solver_section(const Fields& root);
 
+/// The `folding:` section into `scene` (folding, folding_solver); nothing without one.
+void read_folding_section(const Fields& root, Scene& scene);
+
 /// The `outputs:` section; defaults depend on the model (drives, panels).
 OutputSettings read_outputs_section(const Fields& root, const Model& model);
 

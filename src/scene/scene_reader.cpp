@@ -40,7 +40,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
   const Fields root(root_node, {file, ""},
                     {"title", "material", "sheet", "discretisation", "stiffness", "fixtures",
                      "gravity", "loads", "drives", "probes", "contact", "zigzag", "pattern",
-                     "solver", "outputs", "pressures", "chambers"});
+                     "solver", "outputs", "pressures", "chambers", "folding"});
   Scene scene;
   scene.file = file;
   scene.overrides = overrides;
@@ -51,6 +51,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
     read_pressures(root, scene.model);
     read_chambers(root, scene.model);
     scene.solver = read_solver_section(root);
+    read_folding_section(root, scene);
     scene.outputs = read_outputs_section(root, scene.model);
     check_run_size(scene, scene.zigzag ? "zigzag.pull_step" : "drives[0].step");
   } catch (const YAML::Exception& e) {  // e.g. a map or list used as a key

@@ -2,9 +2,11 @@
 // drives, probes, contact, solver and outputs -> a Model plus run settings.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "generators/folding.hpp"
 #include "model/model.hpp"
 #include "probes/deployment_phases.hpp"
 #include "scene/overrides.hpp"
@@ -37,6 +39,9 @@ struct Scene {
   Model model;
   SolverSettings solver;
   OutputSettings outputs;
+  /// `folding:` (docs/folding.md): how `finseg run --fold` folds the sheet, and its solver.
+  std::optional<FoldingSpec> folding;
+  SolverSettings folding_solver;
   std::vector<Override> overrides;  ///< `--set` changes applied on top of the file
 };
 

@@ -245,9 +245,9 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
     root.fail("discretisation", "not available with a pattern: use pattern.subdivisions");
   }
   if (root.has("stiffness")) root.fail("stiffness", "not available with a pattern");
-  const Fields p(
-      root.node("pattern"), root.context("pattern"),
-      {"file", "unit", "subdivisions", "start", "crease_law_length", "mountain_law", "valley_law"});
+  const Fields p(root.node("pattern"), root.context("pattern"),
+                 {"file", "unit", "subdivisions", "start", "crease_law_length", "crease_rest",
+                  "mountain_law", "valley_law"});
   std::filesystem::path path = p.required_word("file");
   if (path.is_relative()) path = std::filesystem::path(root.context().file).parent_path() / path;
   pattern_file = path.string();
@@ -264,6 +264,10 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
     p.fail("start", "'" + start + "'; allowed: folded, flat");
   s.start_folded = start == "folded";
   s.crease_law_length = p.number("crease_law_length", 1.0, positive("m"));
+  const std::string rest = p.word("crease_rest", "law");
+  if (rest != "law" && rest != "pattern")
+    p.fail("crease_rest", "'" + rest + "'; allowed: law, pattern");
+  s.laws_rest_at_pattern = rest == "pattern";
   if (p.has("mountain_law")) {
     s.mountain_law = read_crease_law(p.node("mountain_law"), p.context("mountain_law"));
   }

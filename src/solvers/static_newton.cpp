@@ -28,6 +28,7 @@ double force_scale(const Model& model) {
   f = std::max(f, weight * model.gravity_W.norm());
   f = std::max(f, largest_pressure_force(model));
   f = std::max(f, largest_chamber_force(model));
+  f = std::max(f, model.actuation_force);
   for (const DriveDef& d : model.drives) {
     f = std::max(f, d.stiffness * std::max(d.step, 1e-3 * L));
   }

@@ -1,0 +1,25 @@
+// Folding by simulation (docs/folding.md): the stowed state made from the flat (or partly
+// folded) sheet by carrying every crease's rest angle to its target fold angle while the
+// solver follows, contact on, so that layers cannot pass through each other.
+#pragma once
+
+#include "model/model.hpp"
+
+namespace finseg {
+
+/// How far and how fast the creases are folded.
+struct FoldingSpec {
+  double fraction = 1.0;  ///< share of each crease's target angle folded to, (0, 1]
+  double duration = 1.0;  ///< s over which the rest angles move (dynamic solvers), > 0
+};
+
+/// The model of the folding run: every crease with a target fold angle gets its law moved
+/// along its angle so that it rests where the crease is at t = 0 and at `fraction` x its
+/// target from t = `ramp` on (the law's shape about its rest is kept); drives go slack (no
+/// gauge stiffness, no travel) so that nothing holds the sheet where it started. Bodies,
+/// elements and drives keep their number and order: a state of this model is a state of `m`.
+/// `state0_fold` gives each element's fold angle at t = 0 (State::history).
+Model folding_model(const Model& m, const std::vector<double>& state0_fold, double fraction,
+                    double ramp);
+
+}  // namespace finseg
