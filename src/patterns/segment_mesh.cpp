@@ -59,8 +59,8 @@ class Cutter {
         CellLink l;
         l.left = it->second.first;
         l.right = static_cast<int>(c);
-        l.a = b;  // the first cell runs b -> a when this one runs a -> b
-        l.b = a;
+        l.a = l.a_right = b;  // the first cell runs b -> a when this one runs a -> b
+        l.b = l.b_right = a;
         const auto e = side_edge_.find(key(a, b));
         l.pattern_edge = e == side_edge_.end() ? -1 : e->second;
         if (l.pattern_edge >= 0 && p_.edges[l.pattern_edge].assignment == EdgeAssignment::Cut) {
@@ -69,11 +69,36 @@ class Cutter {
         mesh_.links.push_back(l);
       }
     }
+    for (std::size_t k = 0; k < p_.seams.size(); ++k) link_seam(static_cast<int>(k), first);
     return std::move(mesh_);
   }
 
  private:
   const Vec2& flat(int v) const { return mesh_.flat_m[v]; }
+
+  // Links across seam k: point i of edge a (from its u) is point n - i of edge b; the cell
+  // that runs a side in the direction of the joined line is the link's left.
+  void link_seam(int k, const std::map<Key, std::pair<int, int>>& first) {
+    const auto [ea, eb] = p_.seams[k];
+    const auto points = [&](int e) {
+      return side(p_.edges[e].vertices[0], p_.edges[e].vertices[1]);
+    };
+    const std::vector<int> pa = points(ea), pb = points(eb);
+    for (int i = 0; i < n_; ++i) {
+      const auto [ca, start_a] = first.at(key(pa[i], pa[i + 1]));
+      const int cb = first.at(key(pb[n_ - i], pb[n_ - i - 1])).first;
+      CellLink l;
+      l.seam = k;
+      if (start_a == pa[i]) {  // a's cell runs the line forwards, b's backwards
+        l.left = ca, l.a = pa[i], l.b = pa[i + 1], l.pattern_edge = ea;
+        l.right = cb, l.a_right = pb[n_ - i], l.b_right = pb[n_ - i - 1];
+      } else {  // both faces right of their edges (validate_pattern): b's cell forwards
+        l.left = cb, l.a = pb[n_ - i], l.b = pb[n_ - i - 1], l.pattern_edge = eb;
+        l.right = ca, l.a_right = pa[i], l.b_right = pa[i + 1];
+      }
+      mesh_.links.push_back(l);
+    }
+  }
 
   // A new vertex at the affine combination of existing ones (flat and folded alike).
   int combine(const std::vector<std::pair<int, double>>& parts) {
