@@ -104,13 +104,15 @@ CreasePattern strip(bool cut) {
   }
   derive_edge_faces(p, "<strip>");
   if (cut) {
-    int a = -1, b = -1;  // face 1's edge 2-5 (its left: 2 -> 5) and face 2's 9-8 (9 -> 8)
+    // Face 2's edge 9-8 and face 1's edge 2-5, in this order: the seam's element then sits
+    // on face 1 as the uncut sheet's does (it carries its frame on the left of edge b).
+    int a = -1, b = -1;
     for (std::size_t e = 0; e < p.edges.size(); ++e) {
       const auto v = p.edges[e].vertices;
       if ((v[0] == 2 && v[1] == 5) || (v[0] == 5 && v[1] == 2)) a = static_cast<int>(e);
       if ((v[0] == 8 && v[1] == 9) || (v[0] == 9 && v[1] == 8)) b = static_cast<int>(e);
     }
-    p.seams = {{a, b}};
+    p.seams = {{b, a}};
   }
   return p;
 }

@@ -76,25 +76,27 @@ class Cutter {
  private:
   const Vec2& flat(int v) const { return mesh_.flat_m[v]; }
 
-  // Links across seam k: point i of edge a (from its u) is point n - i of edge b; the cell
-  // that runs a side in the direction of the joined line is the link's left.
+  // Links across seam k. The joined line runs as edge b's u -> v (b.u meets a.v): point i
+  // of b is point n - i of a. The cell that runs a side in that direction is the link's
+  // left (b's face when it lies left of b), so that the element's frame sits where a
+  // crease's would on a sheet that went on past edge b (docs/stiffness.md, "Seams").
   void link_seam(int k, const std::map<Key, std::pair<int, int>>& first) {
-    const auto [ea, eb] = p_.seams[k];
+    const int eb = p_.seams[k][1], ea = p_.seams[k][0];
     const auto points = [&](int e) {
       return side(p_.edges[e].vertices[0], p_.edges[e].vertices[1]);
     };
-    const std::vector<int> pa = points(ea), pb = points(eb);
+    const std::vector<int> pb = points(eb), pa = points(ea);
     for (int i = 0; i < n_; ++i) {
-      const auto [ca, start_a] = first.at(key(pa[i], pa[i + 1]));
-      const int cb = first.at(key(pb[n_ - i], pb[n_ - i - 1])).first;
+      const auto [cb, start_b] = first.at(key(pb[i], pb[i + 1]));
+      const int ca = first.at(key(pa[n_ - i], pa[n_ - i - 1])).first;
       CellLink l;
       l.seam = k;
-      if (start_a == pa[i]) {  // a's cell runs the line forwards, b's backwards
-        l.left = ca, l.a = pa[i], l.b = pa[i + 1], l.pattern_edge = ea;
-        l.right = cb, l.a_right = pb[n_ - i], l.b_right = pb[n_ - i - 1];
-      } else {  // both faces right of their edges (validate_pattern): b's cell forwards
-        l.left = cb, l.a = pb[n_ - i], l.b = pb[n_ - i - 1], l.pattern_edge = eb;
-        l.right = ca, l.a_right = pa[i], l.b_right = pa[i + 1];
+      if (start_b == pb[i]) {  // b's cell runs the line forwards, a's backwards
+        l.left = cb, l.a = pb[i], l.b = pb[i + 1], l.pattern_edge = eb;
+        l.right = ca, l.a_right = pa[n_ - i], l.b_right = pa[n_ - i - 1];
+      } else {  // both faces right of their edges (validate_pattern): a's cell forwards
+        l.left = ca, l.a = pa[n_ - i], l.b = pa[n_ - i - 1], l.pattern_edge = ea;
+        l.right = cb, l.a_right = pb[i], l.b_right = pb[i + 1];
       }
       mesh_.links.push_back(l);
     }
