@@ -7,6 +7,7 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -22,6 +23,7 @@ namespace finseg {
 namespace {
 
 constexpr double kShearCorrection = 5.0 / 6.0;
+constexpr double kSeamFlat = 1e-9;  // rad: a seam kinked less than this is flat (round-off)
 
 void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std::string& src) {
   require_positive(s.thickness, src, "sheet.thickness", "m");
@@ -43,6 +45,11 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
     }
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
+  if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
+    throw InputError(src, "finseg:seams",
+                     "a seam joins edges that lie apart on the flat sheet: the pattern must "
+                     "start from its folded coordinates (a foldedForm frame; start: folded)");
+  }
 }
 
 // Rigid motion (R, p) taking the flat points (x, y, 0) nearest to the folded ones (Kabsch).
@@ -67,8 +74,8 @@ void fit_pose(const std::vector<Vec2>& flat, const std::vector<Vec3>& folded, co
 }
 
 // The law of a crease side by its pattern edge, or null for a plate joint.
-std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheetSpec& s, int index,
-                                        const std::string& src) {
+std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheetSpec& s,
+                                        const std::string& field, const std::string& src) {
   EdgeAssignment a = e.assignment;
   if ((a == EdgeAssignment::Flat || a == EdgeAssignment::Unassigned) && e.fold_angle != 0) {
     a = e.fold_angle > 0 ? EdgeAssignment::Valley : EdgeAssignment::Mountain;
@@ -78,7 +85,7 @@ std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheet
   const auto& law = mountain ? s.mountain_law : s.valley_law;
   if (!law) {
     throw InputError(
-        src, fmt::format("edges_assignment[{}]", index),
+        src, field,
         fmt::format("a {} crease needs a {} crease law", mountain ? "mountain" : "valley",
                     mountain ? "mountain" : "valley"));
   }
@@ -92,14 +99,15 @@ double pattern_fold_angle(const CreasePattern& p, int e) {
   return p.vertices_folded_m.empty() ? 0.0 : -measured_fold_angle(p, e);
 }
 
-// The crease on a side of pattern edge `e`: its share of the law, moved to rest at the
-// pattern's fold angle when asked; direction from the assignment (mountain: +1).
-CreaseDef pattern_crease(const CreasePattern& p, int e, std::shared_ptr<const CreaseLaw> law,
+// The crease on a side of pattern edge `pe` whose target fold angle is `target` (sheet
+// convention): its share of the law, moved to rest at the target when asked; direction from
+// the assignment (mountain: +1).
+CreaseDef pattern_crease(const PatternEdge& pe, double target, std::shared_ptr<const CreaseLaw> law,
                          const PatternSheetSpec& spec, double len, double initial) {
   CreaseDef c;
   c.initial_fold_angle = initial;
-  c.target_fold_angle = pattern_fold_angle(p, e);
-  const EdgeAssignment a = p.edges[e].assignment;
+  c.target_fold_angle = target;
+  const EdgeAssignment a = pe.assignment;
   c.direction = a == EdgeAssignment::Mountain ? 1.0
                 : a == EdgeAssignment::Valley ? -1.0
                                               : (c.target_fold_angle < 0 ? -1.0 : 1.0);
@@ -112,27 +120,48 @@ CreaseDef pattern_crease(const CreasePattern& p, int e, std::shared_ptr<const Cr
   return c;
 }
 
+// A cell side in one cell's material coordinates: its midpoint, the unit vector along it
+// (a -> b of the link) and across it (from the link's left cell into its right), and the
+// side frame (x across, y along, z the normal) in the cell's axes.
+struct SideInCell {
+  Vec2 P, along, across;
+  Mat3 frame() const {
+    Mat3 F;
+    F << across.x(), along.x(), 0, across.y(), along.y(), 0, 0, 0, 1;
+    return F;
+  }
+};
+
+SideInCell side_in_cell(const Vec2& a, const Vec2& b) {
+  const Vec2 along = (b - a).normalized();
+  return {0.5 * (a + b), along, Vec2(along.y(), -along.x())};
+}
+
 // The sides of a plate joint as the two cells' curvature fits see them: the vector to the
 // neighbour's centroid, or, next to a clamped cell, to the foot point on the side (the clamp
-// holds the rotation there), whose joint is then the free cell's alone.
-void add_cell_sides(const CellLink& l, const ElementDef& e, int element, const Model& m,
+// holds the rotation there), whose joint is then the free cell's alone. Across a seam the
+// neighbour is unrolled next to the cell: its centroid's offset from the side, in the side's
+// frame, is carried over to the cell's copy of the side.
+void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, const ElementDef& e,
+                    int element, const Model& m,
                     std::vector<std::vector<CellSideGeometry>>& cell_sides) {
-  const Vec2 across(e.R_outer_F(0, 0), e.R_outer_F(1, 0));
-  const Vec2 P(e.c_outer_B.x() + m.bodies[l.left].centroid_M->x(),
-               e.c_outer_B.y() + m.bodies[l.left].centroid_M->y());
   for (const int side : {0, 1}) {
     const int c = side == 0 ? l.left : l.right, o = side == 0 ? l.right : l.left;
-    const Vec2 c_M = *m.bodies[c].centroid_M;
+    const SideInCell &mine = sides[side], &theirs = sides[1 - side];
+    const Vec2 c_M = *m.bodies[c].centroid_M, o_M = *m.bodies[o].centroid_M;
     CellSideGeometry g;
-    g.side = {element, e.R_outer_F, side == 0 ? 1.0 : -1.0};
+    g.side = {element, side == 0 ? e.R_outer_F : e.R_inner_E, side == 0 ? 1.0 : -1.0};
     g.weight = e.K[3];  // twist; bending K[4] is the same on plate joints
     g.crease = e.crease >= 0;
-    g.across_M = across;
+    g.across_M = mine.across;
     if (m.bodies[o].fixed) {
-      g.d_M = across.dot(P - c_M) * across;
+      g.d_M = mine.across.dot(mine.P - c_M) * mine.across;
       g.share = 1;
+    } else if (l.seam < 0) {
+      g.d_M = o_M - c_M;
     } else {
-      g.d_M = *m.bodies[o].centroid_M - c_M;
+      const Vec2 r = o_M - theirs.P;
+      g.d_M = mine.P - c_M + r.dot(theirs.across) * mine.across + r.dot(theirs.along) * mine.along;
     }
     cell_sides[c].push_back(g);
   }
@@ -191,36 +220,54 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
   for (const CellLink& l : mesh.links) {
     const BodyDef &L = m.bodies[l.left], &R = m.bodies[l.right];
-    const Vec2 a = mesh.flat_m[l.a], b = mesh.flat_m[l.b];
-    const double len = (b - a).norm();
-    const Vec2 along = (b - a) / len, across(along.y(), -along.x());  // from L into R
-    const Vec2 P = 0.5 * (a + b);
-    const double dL = across.dot(P - *L.centroid_M), dR = across.dot(*R.centroid_M - P);
+    // Each cell's own copy of the side (two copies across a seam, else the same side).
+    const std::array<SideInCell, 2> sides{
+        side_in_cell(mesh.flat_m[l.a], mesh.flat_m[l.b]),
+        side_in_cell(mesh.flat_m[l.a_right], mesh.flat_m[l.b_right])};
+    const double len = (mesh.flat_m[l.b] - mesh.flat_m[l.a]).norm();
+    const double dL = sides[0].across.dot(sides[0].P - *L.centroid_M),
+                 dR = sides[1].across.dot(*R.centroid_M - sides[1].P);
     const double h = L.fixed ? dR : R.fixed ? dL : dL + dR;
     ElementDef e;
     e.outer = l.left;
     e.inner = l.right;
-    const Vec2 cL = P - *L.centroid_M, cR = P - *R.centroid_M;
+    const Vec2 cL = sides[0].P - *L.centroid_M, cR = sides[1].P - *R.centroid_M;
     e.c_outer_B = Vec3(cL.x(), cL.y(), 0);
     e.c_inner_B = Vec3(cR.x(), cR.y(), 0);
-    Mat3 F;  // side frame in the cells' (material) axes: x across, y along, z normal
-    F << across.x(), along.x(), 0, across.y(), along.y(), 0, 0, 0, 1;
-    e.R_inner_E = e.R_outer_F = F;
+    e.R_outer_F = sides[0].frame();
+    e.R_inner_E = sides[1].frame();
     e.K = plate_joint_stiffness(spec.youngs_modulus, spec.poisson_ratio, spec.thickness, len, h);
     e.C = spec.damping_time * e.K;
-    e.name = fmt::format("side_c{}_c{}", l.left, l.right);
+    e.name = l.seam < 0 ? fmt::format("side_c{}_c{}", l.left, l.right)
+                        : fmt::format("seam{}_c{}_c{}", l.seam + 1, l.left, l.right);
+    // A seam is a crease when the folded sheet kinks across it (as an F edge with that fold
+    // angle), else a plate joint.
+    PatternEdge seam_edge;
+    if (l.seam >= 0) {
+      seam_edge.assignment = EdgeAssignment::Flat;
+      seam_edge.fold_angle = folded ? measured_seam_fold_angle(p, l.seam) : 0.0;
+      if (std::abs(seam_edge.fold_angle) < kSeamFlat) seam_edge.fold_angle = 0;
+    }
     if (l.pattern_edge >= 0) {
-      const PatternEdge& pe = p.edges[l.pattern_edge];
-      if (auto law = law_of(pe, spec, l.pattern_edge, source)) {
+      const PatternEdge& pe = l.seam >= 0 ? seam_edge : p.edges[l.pattern_edge];
+      const std::string field = l.seam >= 0 ? fmt::format("finseg:seams[{}]", l.seam)
+                                            : fmt::format("edges_assignment[{}]", l.pattern_edge);
+      if (auto law = law_of(pe, spec, field, source)) {
         // The sheet's fold angle turns the right cell about the side's +y: FOLD's valley-
         // positive angle with the opposite sign (docs/fold.md).
-        const double fold = folded ? -measured_fold_angle(p, l.pattern_edge) : 0.0;
-        m.creases.push_back(pattern_crease(p, l.pattern_edge, law, spec, len, fold));
+        const double fold = !folded       ? 0.0
+                            : l.seam >= 0 ? -seam_edge.fold_angle
+                                          : -measured_fold_angle(p, l.pattern_edge);
+        const double target =
+            l.seam >= 0 ? -seam_edge.fold_angle : pattern_fold_angle(p, l.pattern_edge);
+        m.creases.push_back(pattern_crease(pe, target, law, spec, len, fold));
         e.crease = static_cast<int>(m.creases.size()) - 1;
-        e.name = fmt::format("crease{}_c{}_c{}", l.pattern_edge + 1, l.left, l.right);
+        if (l.seam < 0) {
+          e.name = fmt::format("crease{}_c{}_c{}", l.pattern_edge + 1, l.left, l.right);
+        }
       }
     }
-    add_cell_sides(l, e, static_cast<int>(m.elements.size()), m, cell_sides);
+    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, cell_sides);
     m.elements.push_back(e);
   }
   const double D = spec.youngs_modulus * std::pow(spec.thickness, 3) /

@@ -57,6 +57,10 @@ struct CreasePattern {
   std::vector<std::vector<int>> faces;  ///< vertex indices, counter-clockwise
   std::vector<PatternEdge> edges;
   bool has_fold_angles = false;  ///< the file gave edges_foldAngle
+  /// Seams: pairs of boundary edges that are the same line of the structure (a tube rolled
+  /// from a rectangle), joined with opposite orientation: edge a's u -> v meets edge b's
+  /// v -> u. FOLD's custom field `finseg:seams` (docs/fold.md).
+  std::vector<std::array<int, 2>> seams;
 };
 
 /// Fills PatternEdge::faces from the face loops. Throws InputError(source, field, ...) naming

@@ -10,6 +10,9 @@
 
 namespace finseg {
 
+/// finseg's custom FOLD field holding CreasePattern::seams.
+inline constexpr const char* kSeamsField = "finseg:seams";
+
 /// Metres per FOLD frame_unit `name` ("m", "cm", "mm", "um", "nm", "in", "pt"); nullopt for
 /// "unit" (no physical meaning) and for names FOLD does not define.
 std::optional<double> metres_per_fold_unit(const std::string& name);

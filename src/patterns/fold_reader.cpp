@@ -69,11 +69,12 @@ double finite_number(const json& n, const Ctx& c, const std::string& field) {
   return v;
 }
 
-int index_value(const json& n, const Ctx& c, const std::string& field) {
+int index_value(const json& n, const Ctx& c, const std::string& field,
+                const char* what = "a vertex") {
   if (!n.is_number_integer() || n.get<long long>() < 0 ||
       n.get<long long>() > std::numeric_limits<int>::max()) {
     throw InputError(c.src, field,
-                     fmt::format("{} is not a vertex index (integer >= 0)", n.dump()));
+                     fmt::format("{} is not {} index (integer >= 0)", n.dump(), what));
   }
   return static_cast<int>(n.get<long long>());
 }
@@ -175,6 +176,25 @@ bool read_edge_data(const json& frame, const Ctx& c, std::vector<PatternEdge>& e
     }
   }
   return has_assign;
+}
+
+// finseg's own field (docs/fold.md): pairs [edge_a, edge_b] of boundary edges joined as one
+// line; checked against the edges in validate_pattern.
+std::vector<std::array<int, 2>> read_seams(const json& root, const Ctx& c) {
+  std::vector<std::array<int, 2>> seams;
+  const json* n = find(root, kSeamsField);
+  if (!n) return seams;
+  if (!n->is_array()) throw InputError(c.src, kSeamsField, "must be an array of [edge, edge]");
+  for (std::size_t i = 0; i < n->size(); ++i) {
+    const json& pair = (*n)[i];
+    const std::string field = c.field(kSeamsField, i);
+    if (!pair.is_array() || pair.size() != 2) {
+      throw InputError(c.src, field, "must be a pair [edge_a, edge_b] of edge indices");
+    }
+    seams.push_back(
+        {index_value(pair[0], c, field, "an edge"), index_value(pair[1], c, field, "an edge")});
+  }
+  return seams;
 }
 
 void derive_assignments(CreasePattern& p, const std::string& src) {
@@ -303,6 +323,7 @@ CreasePattern parse_fold(const std::string& text, const std::string& src,
     }
     p.edges = edges_from_faces(p.faces);
   }
+  p.seams = read_seams(root, c);
   read_folded_frame(root, c, scale, metres_per_unit, p);
   validate_pattern(p, src);
   return p;

@@ -56,6 +56,11 @@ std::string fold_text(const CreasePattern& p) {
     array_field(out, "edges_foldAngle", p.edges.size(),
                 [&](std::size_t i) { return json(p.edges[i].fold_angle / kDegToRad); });
   }
+  if (!p.seams.empty()) {
+    array_field(out, kSeamsField, p.seams.size(), [&](std::size_t i) {
+      return json::array({p.seams[i][0], p.seams[i][1]});
+    });
+  }
   if (!p.vertices_folded_m.empty()) {
     out << ",\n  \"file_frames\": [{\n  \"frame_classes\": [\"foldedForm\"]";
     out << ",\n  \"frame_attributes\": [\"3D\"]";

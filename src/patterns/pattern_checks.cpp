@@ -162,6 +162,82 @@ void check_planar(const CreasePattern& p, std::size_t f, const PatternTolerances
   }
 }
 
+// Unit normal of folded face f (Newell's method: robust for any planar polygon).
+Vec3 folded_normal(const CreasePattern& p, int f) {
+  Vec3 n = Vec3::Zero();
+  const std::vector<int>& loop = p.faces[f];
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    n += p.vertices_folded_m[loop[i]].cross(p.vertices_folded_m[loop[(i + 1) % loop.size()]]);
+  }
+  return n.normalized();
+}
+
+// Signed fold angle (valley positive) from the left face's normal to the right one's about
+// the folded line u -> v.
+double fold_angle_between(const CreasePattern& p, const Vec3& nl, const Vec3& nr,
+                          const std::array<int, 2>& uv) {
+  const Vec3 d = (p.vertices_folded_m[uv[1]] - p.vertices_folded_m[uv[0]]).normalized();
+  return std::atan2(nr.cross(nl).dot(d), nl.dot(nr));
+}
+
+// Seams (docs/fold.md, "finseg:seams"): two distinct boundary edges, each in one seam, of
+// equal flat length, their faces on the same side of u -> v (then a's face runs the joined
+// line opposite to b's: one orientation), and when folded a.u at b.v, a.v at b.u.
+void check_seams(const CreasePattern& p, double size, const PatternTolerances& tol,
+                 const std::string& src) {
+  const int ne = static_cast<int>(p.edges.size());
+  std::vector<int> seam_of(p.edges.size(), -1);
+  for (std::size_t i = 0; i < p.seams.size(); ++i) {
+    const std::string field = at("finseg:seams", i);
+    const auto [a, b] = p.seams[i];
+    if (a == b) throw InputError(src, field, fmt::format("edge {} joined to itself", a));
+    for (const int e : {a, b}) {
+      if (e < 0 || e >= ne) {
+        throw InputError(src, field, fmt::format("edge {} out of range 0..{}", e, ne - 1));
+      }
+      if (p.edges[e].assignment != EdgeAssignment::Boundary) {
+        throw InputError(src, field,
+                         fmt::format("edge {} is '{}'; a seam joins boundary (B) edges", e,
+                                     static_cast<char>(p.edges[e].assignment)));
+      }
+      if (seam_of[e] >= 0) {
+        throw InputError(src, field, fmt::format("edge {} is in seam {} already", e, seam_of[e]));
+      }
+      seam_of[e] = static_cast<int>(i);
+    }
+    const PatternEdge &A = p.edges[a], &B = p.edges[b];
+    const auto flat_length = [&](const PatternEdge& e) {
+      return (p.vertices_flat_m[e.vertices[1]] - p.vertices_flat_m[e.vertices[0]]).norm();
+    };
+    const double la = flat_length(A), lb = flat_length(B);
+    if (std::abs(la - lb) > tol.seam_length * std::max(la, lb)) {
+      throw InputError(src, field,
+                       fmt::format("edge {} is {:.9g} m long, edge {} {:.9g} m; a seam joins "
+                                   "edges of equal length",
+                                   a, la, b, lb));
+    }
+    if ((A.faces[0] >= 0) != (B.faces[0] >= 0)) {
+      throw InputError(
+          src, field,
+          fmt::format("face {} lies left of edge {}, face {} right of edge {}: "
+                      "joined u -> v to v -> u the sheet would turn over (a "
+                      "Moebius band); reverse one edge",
+                      std::max(A.faces[0], A.faces[1]), a, std::max(B.faces[0], B.faces[1]), b));
+    }
+    if (p.vertices_folded_m.empty()) continue;
+    for (int k = 0; k < 2; ++k) {
+      const int va = A.vertices[k], vb = B.vertices[1 - k];
+      const double gap = (p.vertices_folded_m[va] - p.vertices_folded_m[vb]).norm();
+      if (gap > tol.seam_gap * size) {
+        throw InputError(src, field,
+                         fmt::format("folded, vertex {} of edge {} lies {:.3g} m from vertex {} "
+                                     "of edge {} that it joins (limit {:.3g} m)",
+                                     va, a, gap, vb, b, tol.seam_gap * size));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void validate_pattern(CreasePattern& p, const std::string& src, const PatternTolerances& tol) {
@@ -187,22 +263,23 @@ void validate_pattern(CreasePattern& p, const std::string& src, const PatternTol
                                  "shared vertex",
                                  b[0], b[1], (*hit)[0], a[0], a[1]));
   }
+  check_seams(p, box.diagonal().norm(), tol, src);
 }
 
 double measured_fold_angle(const CreasePattern& p, int e) {
   const PatternEdge& edge = p.edges[e];
-  auto normal = [&](int f) {
-    Vec3 n = Vec3::Zero();  // Newell's method: robust for any planar polygon
-    const std::vector<int>& loop = p.faces[f];
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-      n += p.vertices_folded_m[loop[i]].cross(p.vertices_folded_m[loop[(i + 1) % loop.size()]]);
-    }
-    return n.normalized();
-  };
-  const Vec3 nl = normal(edge.faces[0]), nr = normal(edge.faces[1]);
-  const Vec3 d =
-      (p.vertices_folded_m[edge.vertices[1]] - p.vertices_folded_m[edge.vertices[0]]).normalized();
-  return std::atan2(nr.cross(nl).dot(d), nl.dot(nr));
+  const Vec3 nl = folded_normal(p, edge.faces[0]), nr = folded_normal(p, edge.faces[1]);
+  return fold_angle_between(p, nl, nr, edge.vertices);
+}
+
+double measured_seam_fold_angle(const CreasePattern& p, int k) {
+  const PatternEdge &A = p.edges[p.seams[k][0]], &B = p.edges[p.seams[k][1]];
+  // Along a.u -> a.v the face left of its edge runs forwards: a's face if it is left of a,
+  // else b's (then both lie right of their edges and b's runs b.v -> b.u = a.u -> a.v).
+  const int fa = std::max(A.faces[0], A.faces[1]), fb = std::max(B.faces[0], B.faces[1]);
+  const bool a_left = A.faces[0] >= 0;
+  const Vec3 nl = folded_normal(p, a_left ? fa : fb), nr = folded_normal(p, a_left ? fb : fa);
+  return fold_angle_between(p, nl, nr, A.vertices);
 }
 
 }  // namespace finseg

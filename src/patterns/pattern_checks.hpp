@@ -14,16 +14,20 @@ namespace finseg {
 
 /// Relative tolerances of the geometric checks (docs/fold.md, "Refusals").
 struct PatternTolerances {
-  double planarity = 1e-6;  ///< folded face off its best-fit plane / face diameter
-  double area = 1e-10;      ///< face area / face diameter^2 below which a face is degenerate
-  double convexity = 1e-9;  ///< reflex-corner sine tolerated (straight corners are allowed)
-  double touch = 1e-9;      ///< distance / pattern size at which two edges count as touching
+  double planarity = 1e-6;    ///< folded face off its best-fit plane / face diameter
+  double area = 1e-10;        ///< face area / face diameter^2 below which a face is degenerate
+  double convexity = 1e-9;    ///< reflex-corner sine tolerated (straight corners are allowed)
+  double touch = 1e-9;        ///< distance / pattern size at which two edges count as touching
+  double seam_length = 1e-9;  ///< relative difference of a seam's two edge lengths
+  double seam_gap = 1e-6;     ///< folded distance of a seam's joined ends / pattern size
 };
 
 /// Checks everything and fills each edge's `faces`: indices in range, faces of >= 3 distinct
 /// vertices, the edge-face adjacency (manifold, consistently oriented), assignment against
 /// adjacency and fold angle, face geometry (area, counter-clockwise, convex, planar when
-/// folded) and crossing edges. Throws InputError(source, field[index], why).
+/// folded), crossing edges and seams (boundary edges, each in one seam, equal lengths,
+/// faces on the same side so the sheet keeps its orientation, ends meeting when folded). Throws
+/// InputError(source, field[index], why).
 void validate_pattern(CreasePattern& p, const std::string& source,
                       const PatternTolerances& tol = {});
 
@@ -38,5 +42,8 @@ std::optional<std::array<int, 2>> find_edge_crossing(const std::vector<Vec2>& xy
 /// Signed fold angle of interior edge `e` measured from the folded 3-D coordinates, rad, in
 /// FOLD's convention (valley positive). Needs vertices_folded_m and two faces on the edge.
 double measured_fold_angle(const CreasePattern& p, int e);
+
+/// The same across seam `k`, along its edge a (u -> v), from the faces on its two edges.
+double measured_seam_fold_angle(const CreasePattern& p, int k);
 
 }  // namespace finseg

@@ -59,8 +59,8 @@ class Cutter {
         CellLink l;
         l.left = it->second.first;
         l.right = static_cast<int>(c);
-        l.a = b;  // the first cell runs b -> a when this one runs a -> b
-        l.b = a;
+        l.a = l.a_right = b;  // the first cell runs b -> a when this one runs a -> b
+        l.b = l.b_right = a;
         const auto e = side_edge_.find(key(a, b));
         l.pattern_edge = e == side_edge_.end() ? -1 : e->second;
         if (l.pattern_edge >= 0 && p_.edges[l.pattern_edge].assignment == EdgeAssignment::Cut) {
@@ -69,11 +69,38 @@ class Cutter {
         mesh_.links.push_back(l);
       }
     }
+    for (std::size_t k = 0; k < p_.seams.size(); ++k) link_seam(static_cast<int>(k), first);
     return std::move(mesh_);
   }
 
  private:
   const Vec2& flat(int v) const { return mesh_.flat_m[v]; }
+
+  // Links across seam k. The joined line runs as edge b's u -> v (b.u meets a.v): point i
+  // of b is point n - i of a. The cell that runs a side in that direction is the link's
+  // left (b's face when it lies left of b), so that the element's frame sits where a
+  // crease's would on a sheet that went on past edge b (docs/stiffness.md, "Seams").
+  void link_seam(int k, const std::map<Key, std::pair<int, int>>& first) {
+    const int eb = p_.seams[k][1], ea = p_.seams[k][0];
+    const auto points = [&](int e) {
+      return side(p_.edges[e].vertices[0], p_.edges[e].vertices[1]);
+    };
+    const std::vector<int> pb = points(eb), pa = points(ea);
+    for (int i = 0; i < n_; ++i) {
+      const auto [cb, start_b] = first.at(key(pb[i], pb[i + 1]));
+      const int ca = first.at(key(pa[n_ - i], pa[n_ - i - 1])).first;
+      CellLink l;
+      l.seam = k;
+      if (start_b == pb[i]) {  // b's cell runs the line forwards, a's backwards
+        l.left = cb, l.a = pb[i], l.b = pb[i + 1], l.pattern_edge = eb;
+        l.right = ca, l.a_right = pa[n_ - i], l.b_right = pa[n_ - i - 1];
+      } else {  // both faces right of their edges (validate_pattern): a's cell forwards
+        l.left = ca, l.a = pa[n_ - i], l.b = pa[n_ - i - 1], l.pattern_edge = ea;
+        l.right = cb, l.a_right = pb[i], l.b_right = pb[i + 1];
+      }
+      mesh_.links.push_back(l);
+    }
+  }
 
   // A new vertex at the affine combination of existing ones (flat and folded alike).
   int combine(const std::vector<std::pair<int, double>>& parts) {

@@ -11,10 +11,14 @@
 namespace finseg {
 
 /// A side shared by two cells: `left` runs it a -> b counter-clockwise, `right` b -> a.
+/// Across a seam the two cells have their own copies of the side's points: the right cell
+/// runs b_right -> a_right (elsewhere a_right = a, b_right = b).
 struct CellLink {
   int left = -1, right = -1;
   int a = -1, b = -1;     ///< mesh vertices
-  int pattern_edge = -1;  ///< the pattern edge it lies on, -1 inside a face
+  int pattern_edge = -1;  ///< the pattern edge it lies on (left's edge on a seam), -1 inside
+  int a_right = -1, b_right = -1;  ///< the right cell's vertices at a and b
+  int seam = -1;                   ///< CreasePattern::seams index, -1 if none
 };
 
 struct SegmentMesh {
@@ -27,7 +31,8 @@ struct SegmentMesh {
 
 /// Cuts every face of `p` (validated, edge faces derived) into n x n cells, n >= 1. Folded
 /// positions of new vertices are interpolated in their face (linear on triangles, bilinear
-/// on quadrilaterals), so planar folded faces stay planar.
+/// on quadrilaterals), so planar folded faces stay planar. The two edges of a seam get
+/// matching points (the same fractions of their length), and a link per pair of sides.
 SegmentMesh subdivide_pattern(const CreasePattern& p, int n);
 
 }  // namespace finseg

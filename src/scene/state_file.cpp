@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -167,6 +168,49 @@ void read_contact(const Reader& in, const json& j, std::size_t bodies, State& s)
     s.contact.R_WB.push_back(in.rotation(r[i], fmt::format("contact.R_WB[{}]", i)));
 }
 
+// The gas of each chamber (docs/gas.md): keys with their units, one object per chamber.
+constexpr std::array<std::pair<const char*, double ChamberGas::*>, 9> kGasKeys{{
+    {"t", &ChamberGas::t},
+    {"mass_kg", &ChamberGas::mass},
+    {"energy_J", &ChamberGas::energy},
+    {"volume_m3", &ChamberGas::volume},
+    {"pressure_Pa", &ChamberGas::pressure},
+    {"temperature_K", &ChamberGas::temperature},
+    {"work_J", &ChamberGas::work},
+    {"injected_kg", &ChamberGas::injected},
+    {"vented_kg", &ChamberGas::vented},
+}};
+
+json chambers_json(const Model& model, const State& s) {
+  json out = json::array();
+  for (std::size_t c = 0; c < s.chambers.size(); ++c) {
+    json g = {{"name", model.chambers[c].name}};
+    for (const auto& [key, member] : kGasKeys) g[key] = s.chambers[c].*member;
+    out.push_back(g);
+  }
+  return out;
+}
+
+// Required when the model has chambers (a state without its gas would restart it).
+void read_chambers(const Reader& in, const json& j, const Model& model, State& s) {
+  const std::size_t n = model.chambers.size();
+  if (n == 0) return;
+  const json& arr = in.array(in.key(j, "chambers", ""), "chambers", n);
+  for (std::size_t c = 0; c < n; ++c) {
+    const std::string f = fmt::format("chambers[{}]", c);
+    ChamberGas g;
+    for (const auto& [key, member] : kGasKeys) {
+      g.*member = in.number(in.key(arr[c], key, f), f + "." + key);
+      // Everything but the work is a mass, energy or state variable that cannot be negative.
+      if (member != &ChamberGas::work && member != &ChamberGas::t && g.*member < 0) {
+        in.fail(f + "." + key, "expected >= 0");
+      }
+    }
+    if (!(g.volume > 0)) in.fail(f + ".volume_m3", "expected > 0");
+    s.chambers.push_back(g);
+  }
+}
+
 void read_solver(const Reader& in, const json& j, std::size_t bodies, State& s) {
   const json& m = in.key(j, "solver", "");
   s.solver.t = in.number(in.key(m, "t", "solver"), "solver.t");
@@ -230,13 +274,15 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
           {"model",
            {{"bodies", model.bodies.size()},
             {"elements", model.elements.size()},
-            {"drives", model.drives.size()}}},
+            {"drives", model.drives.size()},
+            {"chambers", model.chambers.size()}}},
           {"t", s.t},
           {"load_scale", s.load_scale},
           {"drive_s_m", s.drive_s},
           {"bodies", bodies},
           {"elements", elements},
           {"contact", contact_json(s.contact)},
+          {"chambers", chambers_json(model, s)},
           {"solver",
            {{"t", s.solver.t},
             {"dt_s", s.solver.dt},
@@ -270,6 +316,7 @@ StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,
   count("bodies", nb);
   count("elements", ne);
   count("drives", nd);
+  if (!model.chambers.empty() || m.contains("chambers")) count("chambers", model.chambers.size());
   StateSnapshot snap;
   const json& hash = in.key(j, "scene_hash", "");
   if (!hash.is_string()) in.fail("scene_hash", "expected a string");
@@ -284,6 +331,7 @@ StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,
   read_elements(in, j, ne, s);
   read_contact(in, j, nb, s);
   read_solver(in, j, nb, s);
+  read_chambers(in, j, model, s);
   return snap;
 }
 
