@@ -120,8 +120,14 @@ bool PairRules::may_touch(int a, int b) const {
   // cut) or within the crease zone, the material a real fold bends through.
   if (A.centroid_M && B.centroid_M) {
     const double touch = 1e-3 * std::sqrt(std::min(segment_area(A), segment_area(B)));
-    const double d = polygon_distance(material_outline(A), material_outline(B));
-    if (d <= touch || d < crease_zone_width(def_, A, B)) return false;
+    const double reach = std::max(touch, crease_zone_width(def_, A, B));
+    // Most pairs (stacked layers) lie far apart on the sheet: their circumcircles tell.
+    const double apart = (*A.centroid_M - *B.centroid_M).norm() - outline_radius(A.outline_B) -
+                         outline_radius(B.outline_B);
+    if (!(apart > reach)) {
+      const double d = polygon_distance(material_outline(A), material_outline(B));
+      if (d <= touch || d < reach) return false;
+    }
   }
   if (A.panel == B.panel && def_.panel_exclusion > 0 && within_hops(a, b, A.panel)) return false;
   return true;
