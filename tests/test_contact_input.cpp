@@ -26,6 +26,7 @@ friction:
   tangential_damping: 0.01
 panel_exclusion: 3
 groups: [[1, 2], [2, 3]]
+crease_zone: 3.0e-4
 )";
 
 ContactDef read(const std::string& text) {
@@ -44,6 +45,7 @@ TEST(ContactInput, ReadsEveryField) {
   EXPECT_EQ(c.mu_dynamic, 0.35);
   EXPECT_EQ(c.tangential_stiffness, 500);
   EXPECT_EQ(c.panel_exclusion, 3);
+  EXPECT_EQ(c.crease_zone, 3e-4);
   ASSERT_EQ(c.groups.size(), 2u);
   EXPECT_EQ(c.groups[1][1], 2);
 }
@@ -75,6 +77,7 @@ TEST(ContactInput, RefusesBadValuesNamingTheField) {
   expect_refused("tangential_stiffness: 500", "tangential_stiffness: 0",
                  "contact.tangential_stiffness");
   expect_refused("panel_exclusion: 3", "panel_exclusion: -1", "contact.panel_exclusion");
+  expect_refused("crease_zone: 3.0e-4", "crease_zone: -1e-4", "contact.crease_zone");
   expect_refused("damping_law: flores", "damping_law: soft", "contact.damping_law");
   expect_refused("model: anchor", "model: sticky", "contact.friction.model");
   expect_refused("exponent: 1.5", "exponnent: 1.5", "contact.exponnent");

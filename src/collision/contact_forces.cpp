@@ -11,6 +11,7 @@
 #include "collision/broadphase.hpp"
 #include "collision/contact_laws.hpp"
 #include "collision/narrowphase.hpp"
+#include "collision/pair_rules.hpp"
 #include "elements/assembler.hpp"
 
 namespace finseg {
@@ -30,85 +31,6 @@ const ContactAnchor* find_anchor(const ContactState& cs, std::uint64_t key) {
                        [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
   return (it != cs.anchors.end() && it->key == key) ? &*it : nullptr;
 }
-
-/// Which pairs may touch (docs/contact.md, "Which pairs"): built once per evaluation.
-class PairRules {
- public:
-  explicit PairRules(const Model& m) : model_(m), def_(m.contact) {
-    const int n = static_cast<int>(m.bodies.size());
-    start_.assign(n + 1, 0);
-    for (const ElementDef& e : m.elements) {
-      if (e.inner < 0 || e.outer < 0 || e.inner >= n || e.outer >= n) continue;
-      ++start_[e.inner + 1];
-      ++start_[e.outer + 1];
-    }
-    for (int i = 0; i < n; ++i) start_[i + 1] += start_[i];
-    nbr_.resize(start_[n]);
-    std::vector<int> fill(start_.begin(), start_.end() - 1);
-    for (const ElementDef& e : m.elements) {
-      if (e.inner < 0 || e.outer < 0 || e.inner >= n || e.outer >= n) continue;
-      nbr_[fill[e.inner]++] = e.outer;
-      nbr_[fill[e.outer]++] = e.inner;
-    }
-    if (!def_.groups.empty()) {
-      int panels = 0;
-      for (const BodyDef& b : m.bodies) panels = std::max(panels, b.panel + 1);
-      for (const auto& g : def_.groups)
-        for (int p : g) panels = std::max(panels, p + 1);
-      panels_ = panels;
-      allowed_.assign(static_cast<std::size_t>(panels) * panels, 0);
-      for (const auto& g : def_.groups)
-        for (int p : g)
-          for (int q : g) allowed_[static_cast<std::size_t>(p) * panels + q] = 1;
-    }
-  }
-
-  bool may_touch(int a, int b) const {
-    const BodyDef& A = model_.bodies[a];
-    const BodyDef& B = model_.bodies[b];
-    if (A.fixed && B.fixed) return false;
-    if (!allowed_.empty()) {
-      if (A.panel < 0 || B.panel < 0) return false;
-      if (!allowed_[static_cast<std::size_t>(A.panel) * panels_ + B.panel]) return false;
-    }
-    for (int k = start_[a]; k < start_[a + 1]; ++k)
-      if (nbr_[k] == b) return false;
-    // Neighbours on the flat sheet (also diagonal ones and across a crease) share an edge
-    // or a corner that the joints hold together: never a contact.
-    if (A.centroid_M && B.centroid_M) {
-      const double tol = 1e-3 * std::sqrt(std::min(segment_area(A), segment_area(B)));
-      if (polygon_distance(material_outline(A), material_outline(B)) <= tol) return false;
-    }
-    if (A.panel == B.panel && def_.panel_exclusion > 0 && within_hops(a, b, A.panel)) return false;
-    return true;
-  }
-
- private:
-  // Breadth-first search from a inside its panel, at most panel_exclusion elements deep.
-  bool within_hops(int a, int b, int panel) const {
-    std::vector<int> frontier{a}, next, seen{a};
-    for (int depth = 0; depth < def_.panel_exclusion && !frontier.empty(); ++depth) {
-      next.clear();
-      for (int i : frontier)
-        for (int k = start_[i]; k < start_[i + 1]; ++k) {
-          const int j = nbr_[k];
-          if (model_.bodies[j].panel != panel) continue;
-          if (j == b) return true;
-          if (std::find(seen.begin(), seen.end(), j) != seen.end()) continue;
-          seen.push_back(j);
-          next.push_back(j);
-        }
-      std::swap(frontier, next);
-    }
-    return false;
-  }
-
-  const Model& model_;
-  const ContactDef& def_;
-  std::vector<int> start_, nbr_;
-  std::vector<char> allowed_;
-  int panels_ = 0;
-};
 
 BodyKin<double> kin_of(const State& s, int i) {
   return {s.p_W[i], s.R_WB[i], s.v_W[i], s.w_W[i]};
@@ -159,19 +81,13 @@ struct PairContact {
 template <class Visit>
 void detect(const Model& model, const State& state, Visit&& visit) {
   const ContactDef& def = model.contact;
-  const int n = static_cast<int>(model.bodies.size());
   // Buffers kept per thread between calls: large models then detect without page faults.
   thread_local std::vector<Aabb> boxes;
   thread_local BroadPhase broad;
   thread_local PairContact pc;
-  boxes.resize(n);
-  for (int i = 0; i < n; ++i)
-    boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i], def.margin);
-  const auto candidates = broad.find_pairs(boxes);
-  if (candidates.empty()) return;
   const PairRules rules(model);
+  const auto candidates = contact_candidates(model, state, rules, broad, boxes);
   for (const auto& [a, b] : candidates) {
-    if (!rules.may_touch(a, b)) continue;
     pc.a = a;
     pc.b = b;
     pc.sa = plate_shape(model.bodies[a]);

@@ -88,6 +88,11 @@ void validate_contact(const ContactDef& c, const std::string& file) {
     fail("panel_exclusion", fmt::format("must be >= 0 elements, got {}", c.panel_exclusion));
   if (c.samples_per_edge < 2 || c.samples_per_edge > 16)
     fail("samples_per_edge", fmt::format("must be in 2..16 points, got {}", c.samples_per_edge));
+  if (c.crease_zone) {
+    finite(*c.crease_zone, "crease_zone");
+    if (!(*c.crease_zone >= 0))
+      fail("crease_zone", fmt::format("must be >= 0 m, got {}", *c.crease_zone));
+  }
   finite(c.margin, "margin");
   if (!(c.margin >= 0)) fail("margin", fmt::format("must be >= 0 m, got {}", c.margin));
   for (std::size_t g = 0; g < c.groups.size(); ++g)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/types.hpp"
@@ -53,6 +54,10 @@ struct ContactDef {
   int panel_exclusion = 2;
   /// Lists of panels that may touch each other; empty: every panel with every panel.
   std::vector<std::vector<int>> groups;
+  /// Pairs closer than this on the flat sheet (material distance, m, >= 0) never touch: the
+  /// material a real fold bends through (docs/contact.md). Unset: twice the thicker plate's
+  /// thickness.
+  std::optional<double> crease_zone;
   double margin = 0;  ///< extra broad-phase box growth, m, >= 0
   /// Sample points per plate side of the narrow phase (n x n on a rectangle), 2..16.
   int samples_per_edge = 3;

@@ -17,10 +17,10 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, 
   if (!node || node.IsNull()) return c;
   if (!node.IsMap())
     throw InputError(ctx.file, ctx.field, "must be a map of contact parameters (docs/contact.md)");
-  const Fields f(
-      node, ctx,
-      {"enabled", "stiffness", "exponent", "damping_law", "damping", "damping_depth", "restitution",
-       "min_impact_speed", "friction", "panel_exclusion", "groups", "margin", "samples_per_edge"});
+  const Fields f(node, ctx,
+                 {"enabled", "stiffness", "exponent", "damping_law", "damping", "damping_depth",
+                  "restitution", "min_impact_speed", "friction", "panel_exclusion", "groups",
+                  "crease_zone", "margin", "samples_per_edge"});
   // Numbers are only parsed here; validate_contact() checks their ranges (also for models
   // built through the API).
   auto number = [](const Fields& fs, const char* key, double fallback, const char* unit) {
@@ -34,6 +34,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, 
   c.restitution = number(f, "restitution", c.restitution, "");
   c.min_impact_speed = number(f, "min_impact_speed", c.min_impact_speed, "m/s");
   c.margin = number(f, "margin", c.margin, "m");
+  if (f.has("crease_zone")) c.crease_zone = number(f, "crease_zone", 0, "m");
   const std::string law = f.word("damping_law", "impact");
   if (law == "impact") {
     c.damping_law = ContactDamping::Impact;
