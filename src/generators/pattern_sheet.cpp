@@ -103,26 +103,11 @@ void add_cell_sides(const CellLink& l, const ElementDef& e, int element, const M
     if (m.bodies[o].fixed) {
       g.d_M = across.dot(P - c_M) * across;
       g.share = 1;
-      g.tilt = -midpoint_tilt(m.bodies[c].outline_B);
     } else {
       g.d_M = *m.bodies[o].centroid_M - c_M;
-      g.tilt = midpoint_tilt(m.bodies[o].outline_B) - midpoint_tilt(m.bodies[c].outline_B);
     }
     cell_sides[c].push_back(g);
   }
-}
-
-// True for a cell whose outline maps onto itself through its centroid (rectangles,
-// parallelograms): its plane through the side midpoints is the tangent at its centroid.
-bool centrally_symmetric(const Outline& o_B) {
-  if (o_B.size() % 2 != 0) return false;
-  const std::size_t h = o_B.size() / 2;
-  double size = 0;
-  for (const Vec2& v : o_B) size = std::max(size, v.norm());
-  for (std::size_t i = 0; i < h; ++i) {
-    if ((o_B[i] + o_B[i + h]).norm() > 1e-9 * size) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -216,8 +201,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
     m.plate_cells.push_back(plate_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),
-                                                  cell_sides[c], D, spec.poisson_ratio,
-                                                  !centrally_symmetric(m.bodies[c].outline_B)));
+                                                  cell_sides[c], D, spec.poisson_ratio));
   }
   m.finalize_dofs();
   return m;

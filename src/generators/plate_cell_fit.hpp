@@ -19,22 +19,13 @@ struct CellSideGeometry {
   /// only its twist spring (about `across_M`, the side's normal) counts in the joints' energy.
   bool crease = false;
   Vec2 across_M = Vec2::Zero();
-  /// Rotation per unit curvature that the two cells' own tilts add to the centroid
-  /// difference (midpoint_tilt of the neighbour less the cell's), rad m.
-  Eigen::Matrix<double, 2, 3> tilt = Eigen::Matrix<double, 2, 3>::Zero();
 };
-
-/// The tilt of a cell whose side midpoints lie on w = 1/2 x^T kappa x (x from its centroid),
-/// less the tilt of that paraboloid at the centroid, as a rotation vector (w_y, -w_x) per
-/// kappa = (k_xx, k_yy, k_xy): zero for centrally symmetric cells, not for triangles.
-Eigen::Matrix<double, 2, 3> midpoint_tilt(const std::vector<Vec2>& outline_B);
 
 /// Q such that, for every uniform curvature, joints plus correction store Kirchhoff's energy
 /// area * 1/2 kappa^T C kappa, C = D [[1, nu, 0], [nu, 1, 0], [0, 0, 2 (1 - nu)]]: the cell's
 /// curvature is fitted to its sides' rotations (weighted least squares), components the
 /// sides do not see are condensed out (free, as at a free edge).
 PlateCellDef plate_cell_correction(int body, double area,
-                                   const std::vector<CellSideGeometry>& sides, double D, double nu,
-                                   bool tilt_free = false);
+                                   const std::vector<CellSideGeometry>& sides, double D, double nu);
 
 }  // namespace finseg
