@@ -1,0 +1,163 @@
+// Triangulated plates against Kirchhoff plate theory (docs/stiffness.md, "Triangular cells"):
+// the simply supported square plate under uniform pressure of test_validation_plate.cpp
+// (Navier: w = 0.00406235 q a^4 / D at the centre) cut into triangles three ways (each grid
+// square split by one diagonal, by alternating diagonals, or into a fan of four), within 1 %
+// with the error shrinking under refinement (issue 11, item 6).
+//
+// Disabled: this is the target the method does not reach yet. Measured (Release, errors of
+// the centre deflection at n = 5 / 9 / 17 / 33 grid squares across): one diagonal +2.6 /
+// +5.4 / +6.4 / +6.7 %, alternating diagonals +4.2 / +4.7 / +4.1 / +3.8 %, fans +4.4 / +3.5
+// / +3.1 / +2.9 %: too soft, not converging (docs/stiffness.md, "Triangular cells"). Run
+// with --gtest_also_run_disabled_tests --gtest_filter='PlateTriangles.*'.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "elements/crease_law.hpp"
+#include "generators/pattern_sheet.hpp"
+#include "model/segment_shape.hpp"
+#include "patterns/crease_pattern.hpp"
+#include "solvers/solver.hpp"
+
+namespace finseg {
+namespace {
+
+constexpr double kA = 0.1, kT = 1e-3, kE = 1e9, kNu = 0.3, kRho = 1000;
+constexpr double kD = kE * kT * kT * kT / (12 * (1 - kNu * kNu));
+constexpr double kQ = 1e-2 * kT * kD / (0.004 * kA * kA * kA * kA);  // w about t / 100: linear
+
+enum class Split { Diagonal, Alternating, Fan };
+
+// The square [0, a]^2 as n x n grid squares cut into triangles (faces 0 .. plate_faces - 1),
+// framed by clamped strips a/4 wide, n quadrilaterals a side, hinged to it (mountain creases
+// that get a law of zero stiffness).
+struct TriPlate {
+  CreasePattern pattern;
+  int plate_faces = 0;
+};
+
+TriPlate triangulated_square(int n, Split split) {
+  const double h = kA / n, b = kA / 4;
+  TriPlate tp;
+  CreasePattern& p = tp.pattern;
+  auto grid = [n](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) p.vertices_flat_m.push_back({i * h, j * h});
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const int v00 = grid(i, j), v10 = grid(i + 1, j), v11 = grid(i + 1, j + 1),
+                v01 = grid(i, j + 1);
+      if (split == Split::Fan) {
+        const int c = static_cast<int>(p.vertices_flat_m.size());
+        p.vertices_flat_m.push_back({(i + 0.5) * h, (j + 0.5) * h});
+        p.faces.push_back({v00, v10, c});
+        p.faces.push_back({v10, v11, c});
+        p.faces.push_back({v11, v01, c});
+        p.faces.push_back({v01, v00, c});
+      } else if (split == Split::Diagonal || (i + j) % 2 == 0) {
+        p.faces.push_back({v00, v10, v11});
+        p.faces.push_back({v00, v11, v01});
+      } else {
+        p.faces.push_back({v00, v10, v01});
+        p.faces.push_back({v10, v11, v01});
+      }
+    }
+  }
+  tp.plate_faces = static_cast<int>(p.faces.size());
+  auto add = [&p](double x, double y) {
+    p.vertices_flat_m.push_back({x, y});
+    return static_cast<int>(p.vertices_flat_m.size()) - 1;
+  };
+  std::vector<int> bottom, right, top, left;
+  for (int k = 0; k <= n; ++k) {
+    bottom.push_back(add(k * h, -b));
+    right.push_back(add(kA + b, k * h));
+    top.push_back(add(k * h, kA + b));
+    left.push_back(add(-b, k * h));
+  }
+  for (int k = 0; k < n; ++k) {
+    p.faces.push_back({bottom[k], bottom[k + 1], grid(k + 1, 0), grid(k, 0)});
+    p.faces.push_back({grid(n, k), right[k], right[k + 1], grid(n, k + 1)});
+    p.faces.push_back({grid(k, n), grid(k + 1, n), top[k + 1], top[k]});
+    p.faces.push_back({left[k], grid(0, k), grid(0, k + 1), left[k + 1]});
+  }
+  p.edges = edges_from_faces(p.faces);
+  derive_edge_faces(p, "<tri plate>");
+  for (PatternEdge& e : p.edges) {
+    if (e.face_count() == 2 && (e.faces[0] < tp.plate_faces) != (e.faces[1] < tp.plate_faces)) {
+      e.assignment = EdgeAssignment::Mountain;
+    }
+  }
+  return tp;
+}
+
+// Centre deflection coefficient w D / (q a^4); w averaged over the cells that hold the centre
+// (a vertex or a side midpoint of the triangulation).
+double centre_alpha(int n, Split split, std::string& status) {
+  const TriPlate tp = triangulated_square(n, split);
+  PatternSheetSpec spec;
+  spec.thickness = kT;
+  spec.youngs_modulus = kE;
+  spec.poisson_ratio = kNu;
+  spec.density = kRho;
+  for (int f = tp.plate_faces; f < static_cast<int>(tp.pattern.faces.size()); ++f) {
+    spec.fixed_faces.push_back(f);
+  }
+  spec.mountain_law = std::make_shared<LinearCreaseLaw>(0.0, 0.0);  // a hinge
+  Model m = build_pattern_model(tp.pattern, spec);
+  PressureDef load;
+  load.name = "q";
+  for (std::size_t c = 0; c < m.bodies.size(); ++c) {
+    if (m.bodies[c].panel < tp.plate_faces) load.bodies.push_back(static_cast<int>(c));
+  }
+  load.pressure = kQ;
+  m.pressures = {load};
+  State s = initial_state(m);
+  SolverSettings set;
+  set.kind = SolverKind::Static;
+  status = run_solver(m, s, set, nullptr).status;
+  const Vec2 centre(kA / 2, kA / 2);
+  double w = 0;
+  int count = 0;
+  for (std::size_t c = 0; c < m.bodies.size(); ++c) {
+    const BodyDef& body = m.bodies[c];
+    if (!polygon_contains(material_outline(body), centre, 1e-12)) continue;
+    const Vec2 r = centre - *body.centroid_M;
+    w += -(s.p_W[c] + s.R_WB[c] * Vec3(r.x(), r.y(), 0)).z();
+    ++count;
+  }
+  return w / count * kD / (kQ * kA * kA * kA * kA);
+}
+
+void expect_converges(Split split, std::vector<int> ns) {
+  constexpr double kNavier = 0.00406235;
+  double last = 1;
+  for (int n : ns) {
+    std::string status;
+    const double alpha = centre_alpha(n, split, status);
+    ASSERT_EQ(status, "ok") << n;
+    const double err = alpha / kNavier - 1;
+    EXPECT_LT(std::abs(err), 0.7 * last) << "n = " << n << ": error " << 100 * err << " %";
+    last = std::abs(err);
+    ::testing::Test::RecordProperty(fmt::format("n{}_rel_error", n), fmt::format("{:.3e}", err));
+  }
+  EXPECT_LT(last, 0.01);
+}
+
+TEST(PlateTriangles, DISABLED_SimplySupportedSquarePlateSplitByDiagonals) {
+  expect_converges(Split::Diagonal, {5, 9, 17});
+}
+
+TEST(PlateTriangles, DISABLED_SimplySupportedSquarePlateSplitByAlternatingDiagonals) {
+  expect_converges(Split::Alternating, {5, 9, 17});
+}
+
+TEST(PlateTriangles, DISABLED_SimplySupportedSquarePlateSplitIntoFans) {
+  expect_converges(Split::Fan, {5, 9, 17});
+}
+
+}  // namespace
+}  // namespace finseg
