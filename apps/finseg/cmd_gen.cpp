@@ -166,6 +166,7 @@ void register_gen(CLI::App& app) {
   gen->require_subcommand(1);
   register_cantilever(gen);
   register_zigzag(gen);
+  register_pattern_generators(gen);
 }
 
 }  // namespace finseg::cli

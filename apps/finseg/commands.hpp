@@ -11,8 +11,10 @@ struct ExitStatus {
   int code = 0;
 };
 
-void register_run(CLI::App& app);       ///< finseg run SCENE --out DIR
-void register_gen(CLI::App& app);       ///< finseg gen cantilever|zigzag ...
+void register_run(CLI::App& app);  ///< finseg run SCENE --out DIR
+void register_gen(CLI::App& app);  ///< finseg gen cantilever|zigzag|miura|cone ...
+/// finseg gen miura|cone: a FOLD pattern and a scene (called by register_gen).
+void register_pattern_generators(CLI::App* gen);
 void register_inspect(CLI::App& app);   ///< finseg inspect SCENE
 void register_modes(CLI::App& app);     ///< finseg modes SCENE
 void register_identify(CLI::App& app);  ///< finseg identify bending|crease DATA

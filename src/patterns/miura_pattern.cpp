@@ -52,8 +52,11 @@ CreasePattern miura_crease_pattern(const MiuraSpec& s) {
   validate(s);
   const int M = s.rows, N = s.columns;
   auto id = [&](int i, int j) { return i * (N + 1) + j; };
+  CreasePattern p;
   // Folded coordinates at theta; the signs of the fold angles are those of any theta in
   // (0, 90) deg, so a flat pattern (theta = 0) gets them from 45 deg.
+  // ... turned so that face 0 lies where it lies flat: a fold from the flat sheet with
+  // face 0 clamped ends in exactly these coordinates.
   auto folded = [&](double theta) {
     const MiuraCell c = miura_cell(s, theta);
     std::vector<Vec3> v;
@@ -62,9 +65,19 @@ CreasePattern miura_crease_pattern(const MiuraSpec& s) {
         v.emplace_back(j * c.S, i * c.L + (j % 2) * c.V, (i % 2) * c.H);
       }
     }
+    auto frame = [](const Vec3& o, const Vec3& a, const Vec3& b) {
+      const Vec3 e1 = (a - o).normalized(), n = e1.cross(b - o).normalized();
+      Mat3 F;
+      F << e1, n.cross(e1), n;
+      return F;
+    };
+    auto flat3 = [&](int k) { return Vec3(p.vertices_flat_m[k].x(), p.vertices_flat_m[k].y(), 0); };
+    const Mat3 R = frame(flat3(id(0, 0)), flat3(id(0, 1)), flat3(id(1, 0))) *
+                   frame(v[id(0, 0)], v[id(0, 1)], v[id(1, 0)]).transpose();
+    const Vec3 o = v[id(0, 0)];
+    for (Vec3& x : v) x = R * (x - o) + flat3(id(0, 0));
     return v;
   };
-  CreasePattern p;
   p.meta.file_creator = "finseg";
   p.meta.frame_title =
       fmt::format("Miura-ori {} x {}, sector angle {:.6g} deg", M, N, s.sector_angle / kDegToRad);

@@ -1,0 +1,240 @@
+// finseg gen miura|cone [options] --out SCENE.yaml: writes a crease pattern (SCENE.fold,
+// docs/fold.md) and a scene that cuts the sheet from it, folds it (`finseg run --fold`,
+// docs/folding.md) and pulls it open.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "apps/finseg/commands.hpp"
+#include "core/error.hpp"
+#include "model/segment_shape.hpp"
+#include "patterns/cone_pattern.hpp"
+#include "patterns/fold_format.hpp"
+#include "patterns/miura_pattern.hpp"
+#include "writers/atomic_write.hpp"
+
+namespace finseg::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// What both generated scenes share: material, discretisation and crease stiffness.
+struct SheetOptions {
+  std::string out;
+  double thickness = 1e-4, modulus = 3e9, density = 800, crease_stiffness = 0.05;
+  int subdivisions = 2;
+};
+
+void add_sheet_options(CLI::App* c, SheetOptions& o) {
+  c->add_option("--thickness", o.thickness, "m")->capture_default_str();
+  c->add_option("--modulus", o.modulus, "Young's modulus, Pa")->capture_default_str();
+  c->add_option("--density", o.density, "kg/m^3")->capture_default_str();
+  c->add_option("--crease-stiffness", o.crease_stiffness,
+                "linear crease stiffness per metre of crease, N m/rad/m (resting folded)")
+      ->capture_default_str();
+  c->add_option("--subdivisions", o.subdivisions, "each face into n x n segments")
+      ->capture_default_str();
+  c->add_option("--out", o.out, "scene file to write; the pattern goes beside it as .fold")
+      ->required();
+}
+
+void check_sheet(const SheetOptions& o) {
+  auto positive = [](double v, const char* option, const char* unit) {
+    if (!(v > 0)) throw InputError("<cli>", option, fmt::format("{} {}; must be > 0", v, unit));
+  };
+  positive(o.thickness, "--thickness", "m");
+  positive(o.modulus, "--modulus", "Pa");
+  positive(o.density, "--density", "kg/m^3");
+  positive(o.crease_stiffness, "--crease-stiffness", "N m/rad/m");
+  if (o.subdivisions < 1 || o.subdivisions > 64) {
+    throw InputError("<cli>", "--subdivisions",
+                     fmt::format("{}; allowed range 1..64", o.subdivisions));
+  }
+}
+
+// The scene's material, sheet and pattern sections (laws resting at the pattern's angles).
+std::string sheet_sections(const SheetOptions& o, const std::string& fold_file) {
+  return fmt::format(
+      "material: {{youngs_modulus: {:g}, poisson_ratio: 0.3, density: {:g}}}\n"
+      "sheet: {{thickness: {:g}}}\n"
+      "pattern:\n"
+      "  file: {}\n"
+      "  subdivisions: {}\n"
+      "  start: folded            # the pattern's folded coordinates\n"
+      "  crease_rest: pattern     # each crease rests at its edges_foldAngle\n"
+      "  crease_law_length: 1.0   # laws below are per metre of crease\n"
+      "  mountain_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n"
+      "  valley_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n",
+      o.modulus, o.density, o.thickness, fold_file, o.subdivisions, o.crease_stiffness,
+      o.crease_stiffness);
+}
+
+// Writes the pattern beside the scene and the scene itself (both atomically).
+void write_pair(const SheetOptions& o, const CreasePattern& p, const std::string& scene_body) {
+  const fs::path scene = o.out;
+  fs::path fold = scene;
+  fold.replace_extension(".fold");
+  write_fold(fold.string(), p);
+  write_file_atomically(scene.string(), scene_body);
+  fmt::print(stderr, "wrote {} and {}\n", scene.string(), fold.string());
+}
+
+Vec2 face_centroid(const CreasePattern& p, int face) {
+  Outline o;
+  for (int v : p.faces[face]) o.push_back(p.vertices_flat_m[v]);
+  return polygon_centroid(o);
+}
+
+void register_miura(CLI::App* gen) {
+  auto o = std::make_shared<SheetOptions>();
+  auto s = std::make_shared<MiuraSpec>();
+  auto angles = std::make_shared<std::pair<double, double>>(60.0, 70.0);
+  CLI::App* c = gen->add_subcommand("miura", "Miura-ori sheet, folded, pulled open along x");
+  c->add_option("--rows", s->rows, "parallelograms along y (a sides)")->capture_default_str();
+  c->add_option("--columns", s->columns, "parallelograms along x (b sides)")->capture_default_str();
+  c->add_option("--side-a", s->side_a, "m")->capture_default_str();
+  c->add_option("--side-b", s->side_b, "m")->capture_default_str();
+  c->add_option("--sector-angle", angles->first, "parallelogram's acute angle, deg (0, 90)")
+      ->capture_default_str();
+  c->add_option("--fold-angle", angles->second, "panels to the plane when folded, deg [0, 90)")
+      ->capture_default_str();
+  add_sheet_options(c, *o);
+  c->callback([o, s, angles] {
+    check_sheet(*o);
+    s->sector_angle = angles->first * kDegToRad;
+    s->fold_angle = angles->second * kDegToRad;
+    CreasePattern p;
+    try {
+      p = miura_crease_pattern(*s);
+    } catch (const InputError& e) {
+      throw InputError("<cli>",
+                       "--" + std::string(e.field() == "side_a"         ? "side-a"
+                                          : e.field() == "side_b"       ? "side-b"
+                                          : e.field() == "sector_angle" ? "sector-angle"
+                                          : e.field() == "fold_angle"   ? "fold-angle"
+                                                                        : e.field()),
+                       e.what());
+    }
+    // Face 1 (row 0, column 0) clamped; the last column's first face pulled along +x until
+    // the sheet is open to 15 degrees.
+    const Vec2 pulled = face_centroid(p, s->columns - 1);
+    // Along the first row's crease line (x of Schenk and Guest's frame): two columns on.
+    const Vec3 along = s->columns >= 2
+                           ? (p.vertices_folded_m[2] - p.vertices_folded_m[0]).normalized()
+                           : Vec3(p.vertices_folded_m[1] - p.vertices_folded_m[0]).normalized();
+    const double travel =
+        (s->columns - 1) * (miura_cell(*s, 15 * kDegToRad).S - miura_cell(*s, s->fold_angle).S);
+    const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
+    const std::string yaml = fmt::format(
+        "# finseg gen miura: {} x {} parallelograms {:g} x {:g} m, sector angle {:g} deg, folded "
+        "to {:g} deg.\n"
+        "# Run: finseg run {} --out DIR (pull open from the pattern's folded form), or fold the\n"
+        "# flat sheet first: finseg run {} --fold --set pattern.start=flat --out F, then\n"
+        "# finseg run {} --state F/checkpoint.json --out DIR (docs/folding.md).\n"
+        "title: Miura-ori {} x {} pulled open\n{}"
+        "fixtures: {{panels: [1]}}\n"
+        "folding:\n"
+        "  fraction: 1.0\n"
+        "  solver: {{type: static, load_steps: 20}}\n"
+        "drives:\n"
+        "  - {{name: pull, at: {{s: {:.9g}, y: {:.9g}}}, direction: [{:.9g}, {:.9g}, {:.9g}],\n"
+        "     stiffness: 100, travel: {:.6g}, step: {:.6g}}}\n"
+        "probes:\n"
+        "  - {{name: pull, type: drive, drive: pull}}\n"
+        "  - {{name: energy, type: energy}}\n"
+        "solver: {{type: static}}\n",
+        s->rows, s->columns, s->side_a, s->side_b, angles->first, angles->second,
+        fs::path(o->out).filename().string(), fs::path(o->out).filename().string(),
+        fs::path(o->out).filename().string(), s->rows, s->columns, sheet_sections(*o, fold_file),
+        pulled.x(), pulled.y(), along.x(), along.y(), along.z(), travel, travel / 40);
+    write_pair(*o, p, yaml);
+  });
+}
+
+void register_cone(CLI::App* gen) {
+  auto o = std::make_shared<SheetOptions>();
+  auto s = std::make_shared<ConeSpec>();
+  auto angles = std::make_shared<std::pair<double, double>>(120.0, 150.0);
+  auto fraction = std::make_shared<double>(0.9);
+  CLI::App* c = gen->add_subcommand(
+      "cone", "conical skin with radial pleats and axial zigzag folds, capped, apex pulled");
+  c->add_option("--base-radius", s->base_radius, "m")->capture_default_str();
+  c->add_option("--top-radius", s->top_radius, "m (> 0: a cap plate closes the top)")
+      ->capture_default_str();
+  c->add_option("--height", s->height, "m")->capture_default_str();
+  c->add_option("--pleats", s->pleats, "radial pleats (2 x pleats generators, M/V alternating)")
+      ->capture_default_str();
+  c->add_option("--axial-folds", s->axial_folds, "ring creases between top and base")
+      ->capture_default_str();
+  c->add_option("--pleat-angle", angles->first, "stowed fold of the generators, deg (0, 180)")
+      ->capture_default_str();
+  c->add_option("--axial-angle", angles->second, "stowed fold of the rings, deg (0, 180)")
+      ->capture_default_str();
+  c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
+      ->capture_default_str();
+  add_sheet_options(c, *o);
+  c->callback([o, s, angles, fraction] {
+    check_sheet(*o);
+    if (!(*fraction > 0 && *fraction <= 1)) {
+      throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
+    }
+    s->pleat_fold_angle = angles->first * kDegToRad;
+    s->axial_fold_angle = angles->second * kDegToRad;
+    CreasePattern p;
+    try {
+      p = cone_crease_pattern(*s);
+    } catch (const InputError& e) {
+      std::string f = e.field();
+      for (char& ch : f) ch = ch == '_' ? '-' : ch;
+      throw InputError("<cli>", "--" + f, e.what());
+    }
+    const int bands = s->axial_folds + 1, wedges = 2 * s->pleats + 1;
+    std::string base;
+    for (int w = 0; w < wedges; ++w) {
+      base += fmt::format("{}{}", w ? ", " : "", cone_face(*s, bands - 1, w) + 1);
+    }
+    const int cap = static_cast<int>(p.faces.size()) - 1;
+    const Vec2 top = face_centroid(p, cap);
+    const std::string scene_name = fs::path(o->out).filename().string();
+    const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
+    const std::string yaml = fmt::format(
+        "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
+        "axial folds.\n"
+        "# Fold it (contact on): finseg run {} --fold --out folded\n"
+        "# Deploy it by pulling the cap: finseg run {} --state folded/checkpoint.json --out "
+        "deploy\n"
+        "title: folded cone pulled open by its cap\n{}"
+        "fixtures: {{panels: [{}]}}   # the bottom band\n"
+        "contact: {{stiffness: 1.0e5, exponent: 1.5,\n"
+        "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+        "folding:\n"
+        "  fraction: {:g}\n"
+        "  duration: 1.0\n"
+        "  solver: {{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}}\n"
+        "drives:\n"
+        "  - {{name: cap, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: 20,\n"
+        "     travel: {:.6g}, step: {:.6g}, speed: {:.6g}}}\n"
+        "probes:\n"
+        "  - {{name: cap, type: drive, drive: cap}}\n"
+        "  - {{name: energy, type: energy}}\n"
+        "  - {{name: contact, type: contact}}\n"
+        "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01}}\n"
+        "outputs: {{vtk: true, html: true, plot: true}}\n",
+        s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, scene_name, scene_name,
+        sheet_sections(*o, fold_file), base, *fraction, top.x(), top.y(), 0.8 * s->height,
+        0.8 * s->height / 100, 0.8 * s->height);
+    write_pair(*o, p, yaml);
+  });
+}
+
+}  // namespace
+
+void register_pattern_generators(CLI::App* gen) {
+  register_miura(gen);
+  register_cone(gen);
+}
+
+}  // namespace finseg::cli

@@ -1,0 +1,164 @@
+#include "patterns/cone_pattern.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "patterns/miura_pattern.hpp"
+
+namespace finseg {
+namespace {
+
+void validate(const ConeSpec& s) {
+  auto fail = [](const char* field, const std::string& what) {
+    throw InputError("<api>", field, what);
+  };
+  if (!(s.base_radius > 0)) fail("base_radius", fmt::format("{} m; must be > 0", s.base_radius));
+  if (!(s.top_radius > 0 && s.top_radius < s.base_radius)) {
+    fail("top_radius",
+         fmt::format("{} m; allowed range (0, base_radius = {}) m", s.top_radius, s.base_radius));
+  }
+  if (!(s.height > 0)) fail("height", fmt::format("{} m; must be > 0", s.height));
+  if (s.pleats < 2 || s.pleats > 500) fail("pleats", fmt::format("{}; allowed 2..500", s.pleats));
+  if (s.axial_folds < 0 || s.axial_folds > 500)
+    fail("axial_folds", fmt::format("{}; allowed 0..500", s.axial_folds));
+  for (const auto& [field, a] : {std::pair{"pleat_fold_angle", s.pleat_fold_angle},
+                                 std::pair{"axial_fold_angle", s.axial_fold_angle}}) {
+    if (!(a > 0 && a < kPi))
+      fail(field, fmt::format("{} deg; allowed range (0, 180) deg", a / kDegToRad));
+  }
+}
+
+}  // namespace
+
+int cone_face(const ConeSpec& s, int band, int wedge) {
+  return band * (2 * s.pleats + 1) + wedge;
+}
+
+CreasePattern cone_crease_pattern(const ConeSpec& s) {
+  validate(s);
+  const int G = 2 * s.pleats, W = G + 1, B = s.axial_folds + 1;
+  // The pyramid: apex on the axis, generator k at azimuth 2 pi (k + 1/2) / G through the base
+  // polygon's corner; the flat development puts generator k at angle (k + 1/2) beta.
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const Vec3 apex(0, 0, z_apex);
+  std::vector<Vec3> g(G + 2);
+  for (int k = 0; k <= G + 1; ++k) {
+    const double psi = 2 * kPi * (k - 0.5) / G;  // g[k]: generator k - 1 (modulo G)
+    g[k] =
+        (Vec3(s.base_radius * std::cos(psi), s.base_radius * std::sin(psi), 0) - apex).normalized();
+  }
+  const double beta = std::acos(g[0].dot(g[1]));
+  const double rho_base = std::hypot(s.base_radius, z_apex);
+  const double rho_top = rho_base * s.top_radius / s.base_radius;
+  // Flat angle of wedge line l (0 and W: the seam's two sides, 1..G: generators 0..G-1).
+  auto line_angle = [&](int l) { return l == 0 ? 0.0 : l == W ? G * beta : (l - 0.5) * beta; };
+  // 3-D direction of flat angle phi, inside the facet between the generators around it.
+  auto direction = [&](double phi) {
+    const int k = std::min(G, static_cast<int>(std::floor(phi / beta + 0.5)));
+    const Vec3 &a = g[k], &b = g[k + 1];  // generators k - 1 and k
+    const Vec3 e = (b - a.dot(b) * a).normalized();
+    const double t = phi - (k - 0.5) * beta;
+    return Vec3(std::cos(t) * a + std::sin(t) * e);
+  };
+
+  CreasePattern p;
+  p.meta.file_creator = "finseg";
+  p.meta.frame_title = fmt::format("cone, {} pleats, {} axial folds", s.pleats, s.axial_folds);
+  // Interior rings zigzag as a Miura sheet's zigzag lines do: odd generators' vertices lie
+  // further out by delta (a sector angle of about 60 degrees at mid-height).
+  const double rho_mid = 0.5 * (rho_top + rho_base);
+  const double delta =
+      std::min(0.4 * (rho_base - rho_top) / B, rho_mid * beta / std::tan(60 * kDegToRad));
+  auto ring_radius = [&](int r, int k) {  // ring r on generator k (modulo G)
+    const double rho = rho_top + (rho_base - rho_top) * r / B;
+    return rho + ((r > 0 && r < B && ((k % G) + G) % G % 2 == 1) ? delta : 0.0);
+  };
+  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
+  for (int r = 0; r <= B; ++r) {
+    for (int l = 0; l <= W; ++l) {
+      const double phi = line_angle(l);
+      double rad = 0;
+      if (l == 0 || l == W) {  // the seam (mid-facet): where the facet's ring chord crosses it
+        const double ra = ring_radius(r, G - 1), rb = ring_radius(r, 0);
+        rad = std::cos(beta / 2) * (ra + ra / (ra + rb) * (rb - ra));
+      } else {
+        rad = ring_radius(r, l - 1);
+      }
+      p.vertices_flat_m.emplace_back(rad * std::cos(phi), rad * std::sin(phi));
+      p.vertices_folded_m.push_back(apex + rad * direction(phi));
+    }
+  }
+  for (int b = 0; b < B; ++b) {
+    for (int w = 0; w < W; ++w) {
+      p.faces.push_back({vid(b, w), vid(b + 1, w), vid(b + 1, w + 1), vid(b, w + 1)});
+    }
+  }
+  // The cap: the top ring's polygon, laid flat beside the development (its own piece of the
+  // flat sheet, seamed to the top band), vertices at the top ring's 3-D positions.
+  const int cap0 = static_cast<int>(p.vertices_flat_m.size());
+  const Vec2 cap_centre(-1.2 * rho_base - 2 * s.top_radius, 0);
+  std::vector<int> cap;
+  for (int l = 0; l < W; ++l) {  // the ring's lines 0..W-1 (line W is line 0 again)
+    const Vec3 x = p.vertices_folded_m[vid(0, l)];
+    p.vertices_flat_m.emplace_back(cap_centre + Vec2(x.x(), x.y()));
+    p.vertices_folded_m.push_back(x);
+    cap.push_back(cap0 + l);
+  }
+  // Seen from above the ring runs counter-clockwise: the cap's +z is up, out of the cone, as
+  // the wall's +z is.
+  p.faces.push_back(cap);
+
+  p.edges = edges_from_faces(p.faces);
+  std::map<std::pair<int, int>, int> edge_of;
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    const auto& v = p.edges[e].vertices;
+    edge_of[{std::min(v[0], v[1]), std::max(v[0], v[1])}] = static_cast<int>(e);
+  }
+  auto edge = [&](int a, int b) { return edge_of.at({std::min(a, b), std::max(a, b)}); };
+  // Mountains and valleys as on a Miura sheet of B rows and G columns (generators its
+  // straight lines, rings its zigzag lines): each ring one kind, alternating ring by ring;
+  // each generator alternating band by band (Maekawa: three of one kind at every vertex).
+  MiuraSpec miura;
+  miura.rows = B;
+  miura.columns = G;
+  const CreasePattern sheet = miura_crease_pattern(miura);
+  std::map<std::pair<int, int>, double> miura_sign;
+  for (const PatternEdge& e : sheet.edges) {
+    const int a = e.vertices[0], b = e.vertices[1];
+    miura_sign[{std::min(a, b), std::max(a, b)}] = e.fold_angle > 0 ? 1.0 : -1.0;
+  }
+  auto sign = [&](int i0, int j0, int i1, int j1) {
+    const int a = i0 * (G + 1) + j0, b = i1 * (G + 1) + j1;
+    return miura_sign.at({std::min(a, b), std::max(a, b)});
+  };
+  auto set = [&](PatternEdge& e, double sgn, double angle) {
+    e.assignment = sgn > 0 ? EdgeAssignment::Valley : EdgeAssignment::Mountain;
+    e.fold_angle = sgn * angle;
+  };
+  p.has_fold_angles = true;
+  for (int b = 0; b < B; ++b) {
+    for (int k = 0; k < G; ++k) {  // generator k is line k + 1
+      set(p.edges[edge(vid(b, k + 1), vid(b + 1, k + 1))], sign(b, k, b + 1, k),
+          s.pleat_fold_angle);
+    }
+    p.seams.push_back({edge(vid(b, 0), vid(b + 1, 0)), edge(vid(b, W), vid(b + 1, W))});
+  }
+  for (int r = 1; r < B; ++r) {
+    for (int l = 0; l < W; ++l) {
+      const double sgn = (l == 0 || l == G) ? sign(r, G - 1, r, G) : sign(r, l - 1, r, l);
+      set(p.edges[edge(vid(r, l), vid(r, l + 1))], sgn, s.axial_fold_angle);
+    }
+  }
+  for (int l = 0; l < W; ++l) {  // the top band's top edges to the cap's sides
+    const int cap_side = edge(cap0 + l, cap0 + (l + 1) % W);
+    p.seams.push_back({edge(vid(0, l), vid(0, l + 1)), cap_side});
+  }
+  derive_edge_faces(p, "<cone>");
+  return p;
+}
+
+}  // namespace finseg

@@ -1,0 +1,31 @@
+// The folded cone's crease pattern (docs/fold.md, "Generated patterns"): the development of
+// a truncated pyramid of 2 x pleats sides (the faceted cone), with radial creases on its
+// generators (the pleats) and axial creases on zigzag rings between them (the axial folds):
+// a Miura sheet wrapped on the cone, mountains and valleys as the Miura's. Closed by a seam
+// in the middle of a facet and capped by a top plate seamed to the top ring. The folded coordinates are the deployed
+// cone; the fold angles are the stowed targets (folding by simulation, docs/folding.md).
+#pragma once
+
+#include "patterns/crease_pattern.hpp"
+
+namespace finseg {
+
+/// Geometry of the folded cone. SI units, angles in rad.
+struct ConeSpec {
+  double base_radius = 0.1;  ///< circumscribed radius of the base, m
+  double top_radius = 0.02;  ///< circumscribed radius of the top (> 0: a cap closes it), m
+  double height = 0.2;       ///< base to top, m
+  int pleats = 12;           ///< radial pleats: 2 x pleats generators, >= 2
+  int axial_folds = 6;       ///< ring creases between top and base, >= 0
+  double pleat_fold_angle = 120 * kDegToRad;  ///< stowed fold of the generators, (0, pi)
+  double axial_fold_angle = 150 * kDegToRad;  ///< stowed fold of the rings, (0, pi)
+};
+
+/// Faces of the pattern: band b (0 at the top) of wedge w is face b (2 pleats + 1) + w; the
+/// cap is the last face. Wedges 0 and 2 pleats are the half facets at the seam.
+int cone_face(const ConeSpec& s, int band, int wedge);
+
+/// The pattern. Throws InputError("<api>", field, ...) for a spec out of range.
+CreasePattern cone_crease_pattern(const ConeSpec& s);
+
+}  // namespace finseg

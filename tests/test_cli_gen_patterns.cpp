@@ -1,0 +1,87 @@
+// finseg gen miura / gen cone through the command line: the FOLD file and scene they write
+// read back; "fold once, deploy many times": a Miura sheet folded from flat by
+// `run --fold` (face 1 clamped flat) reaches the pattern's own folded form (which gen miura
+// places with face 1 where it lies flat), and a run started from that state file pulls it
+// open along the same force curve as a run from the pattern's folded form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_test_util.hpp"
+#include "core/types.hpp"
+
+namespace finseg {
+namespace {
+
+using test::run_finseg;
+using test::TempDir;
+
+std::vector<Vec3> centroids(const TempDir& dir, const std::string& state_file) {
+  std::ifstream in(dir / state_file);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::vector<Vec3> p;
+  for (const auto& b : j["bodies"]) {
+    p.emplace_back(b["p_W_m"][0].get<double>(), b["p_W_m"][1].get<double>(),
+                   b["p_W_m"][2].get<double>());
+  }
+  return p;
+}
+
+TEST(CliGenPatterns, MiuraFoldedFromFlatReachesItsFoldedFormAndDeploysFromTheStateFile) {
+  TempDir dir;
+  auto r = run_finseg(dir, "gen miura --rows 2 --columns 4 --fold-angle 60 --out m.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  // The pattern's folded form at rest (no pull): the reference.
+  r = run_finseg(dir, "run m.yaml --quiet --set drives.0.travel=0 --out ref");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "run m.yaml --quiet --fold --set pattern.start=flat --out folded");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<Vec3> a = centroids(dir, "ref/checkpoint.json");
+  const std::vector<Vec3> b = centroids(dir, "folded/checkpoint.json");
+  ASSERT_EQ(a.size(), b.size());
+  double worst = 0, extent = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    extent = std::max(extent, (a[i] - a[0]).norm());
+    worst = std::max(worst, (a[i] - b[i]).norm());
+  }
+  EXPECT_GT(extent, 0.02);
+  EXPECT_LT(worst, 1e-9 * extent);
+  // Deploy from the folded state: the drive starts where its point is, so the gauge starts
+  // slack and pulls while the creases resist.
+  r = run_finseg(dir, "run m.yaml --quiet --state folded/checkpoint.json --out deploy");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "run m.yaml --quiet --out direct");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string header;
+  const auto rows = test::csv_rows(test::slurp(dir / "deploy/pull.csv"), &header);
+  const auto direct = test::csv_rows(test::slurp(dir / "direct/pull.csv"), &header);
+  ASSERT_GT(rows.size(), 10u);
+  ASSERT_EQ(rows.size(), direct.size());
+  EXPECT_NEAR(rows.front()[1], 0.0, 1e-9);
+  EXPECT_GT(rows.back()[1], 0.0);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_NEAR(rows[k][1], direct[k][1], 1e-6 * std::abs(direct.back()[1])) << "row " << k;
+  }
+}
+
+TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
+  TempDir dir;
+  auto r = run_finseg(dir, "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --out c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  // 2 x 6 + 1 wedges (two half facets at the seam) in 3 bands, and the cap (13 sides:
+  // a fan of 13 triangles).
+  r = run_finseg(dir, "inspect c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies 52 (13 fixed)"), std::string::npos) << r.out;
+  r = run_finseg(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--top-radius"), std::string::npos) << r.err;
+  r = run_finseg(dir, "gen miura --sector-angle 95 --out e.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--sector-angle"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace finseg
