@@ -70,11 +70,12 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   TempDir dir;
   auto r = run_finseg(dir, "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --out c.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
-  // 2 x 6 + 1 wedges (two half facets at the seam) in 3 bands, and the cap (13 sides:
-  // a fan of 13 triangles).
+  // The pattern reads back (faces planar when folded, seams meeting in 3-D): 2 x 6 + 1
+  // wedges (two half facets at the seam) in 3 bands, and two end discs of a 13-sided hub (a
+  // fan of 13 triangles) and 13 trapezoids; the base hub clamped.
   r = run_finseg(dir, "inspect c.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("bodies 52 (13 fixed)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bodies 91 (13 fixed)"), std::string::npos) << r.out;
   r = run_finseg(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--top-radius"), std::string::npos) << r.err;

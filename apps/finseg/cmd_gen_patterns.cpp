@@ -191,12 +191,7 @@ void register_cone(CLI::App* gen) {
       for (char& ch : f) ch = ch == '_' ? '-' : ch;
       throw InputError("<cli>", "--" + f, e.what());
     }
-    const int bands = s->axial_folds + 1, wedges = 2 * s->pleats + 1;
-    std::string base;
-    for (int w = 0; w < wedges; ++w) {
-      base += fmt::format("{}{}", w ? ", " : "", cone_face(*s, bands - 1, w) + 1);
-    }
-    const int cap = static_cast<int>(p.faces.size()) - 1;
+    const int base = cone_hub_face(*s, false) + 1, cap = cone_hub_face(*s, true);
     const Vec2 top = face_centroid(p, cap);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
@@ -206,8 +201,8 @@ void register_cone(CLI::App* gen) {
         "# Fold it (contact on): finseg run {} --fold --out folded\n"
         "# Deploy it by pulling the cap: finseg run {} --state folded/checkpoint.json --out "
         "deploy\n"
-        "title: folded cone pulled open by its cap\n{}"
-        "fixtures: {{panels: [{}]}}   # the bottom band\n"
+        "title: folded cone pulled open by its top hub\n{}"
+        "fixtures: {{panels: [{}]}}   # the base disc's hub\n"
         "contact: {{stiffness: 1.0e5, exponent: 1.5,\n"
         "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
         "folding:\n"

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include "core/error.hpp"
 #include "patterns/miura_pattern.hpp"
@@ -23,6 +24,8 @@ void validate(const ConeSpec& s) {
   }
   if (!(s.height > 0)) fail("height", fmt::format("{} m; must be > 0", s.height));
   if (s.pleats < 2 || s.pleats > 500) fail("pleats", fmt::format("{}; allowed 2..500", s.pleats));
+  if (!(s.hub_fraction > 0 && s.hub_fraction < 1))
+    fail("hub_fraction", fmt::format("{}; allowed range (0, 1)", s.hub_fraction));
   if (s.axial_folds < 0 || s.axial_folds > 500)
     fail("axial_folds", fmt::format("{}; allowed 0..500", s.axial_folds));
   for (const auto& [field, a] : {std::pair{"pleat_fold_angle", s.pleat_fold_angle},
@@ -36,6 +39,11 @@ void validate(const ConeSpec& s) {
 
 int cone_face(const ConeSpec& s, int band, int wedge) {
   return band * (2 * s.pleats + 1) + wedge;
+}
+
+int cone_hub_face(const ConeSpec& s, bool top) {
+  const int W = 2 * s.pleats + 1;
+  return cone_face(s, s.axial_folds + 1, 0) + (top ? 0 : W + 1);
 }
 
 CreasePattern cone_crease_pattern(const ConeSpec& s) {
@@ -97,20 +105,40 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
       p.faces.push_back({vid(b, w), vid(b + 1, w), vid(b + 1, w + 1), vid(b, w + 1)});
     }
   }
-  // The cap: the top ring's polygon, laid flat beside the development (its own piece of the
-  // flat sheet, seamed to the top band), vertices at the top ring's 3-D positions.
-  const int cap0 = static_cast<int>(p.vertices_flat_m.size());
-  const Vec2 cap_centre(-1.2 * rho_base - 2 * s.top_radius, 0);
-  std::vector<int> cap;
-  for (int l = 0; l < W; ++l) {  // the ring's lines 0..W-1 (line W is line 0 again)
-    const Vec3 x = p.vertices_folded_m[vid(0, l)];
-    p.vertices_flat_m.emplace_back(cap_centre + Vec2(x.x(), x.y()));
-    p.vertices_folded_m.push_back(x);
-    cap.push_back(cap0 + l);
-  }
-  // Seen from above the ring runs counter-clockwise: the cap's +z is up, out of the cone, as
-  // the wall's +z is.
-  p.faces.push_back(cap);
+  // The end discs: a rigid hub and a band of trapezoids out to the wall's ring, pleated on
+  // the generators' azimuths so that the ring can draw in as the wall folds. Each is laid
+  // flat beside the development (its own piece of the flat sheet, seamed to the wall); the
+  // top one seen from above (+z up, out of the cone as the wall's +z is), the base one seen
+  // from below (mirrored in y).
+  struct Disc {
+    int ring0, hub0;  // first vertex of its ring copy and of its hub
+  };
+  auto add_disc = [&](int wall_ring, const Vec2& centre, bool from_below) {
+    Disc d{static_cast<int>(p.vertices_flat_m.size()), 0};
+    const double z = p.vertices_folded_m[vid(wall_ring, 1)].z();
+    for (const double scale : {1.0, s.hub_fraction}) {
+      if (scale != 1.0) d.hub0 = static_cast<int>(p.vertices_flat_m.size());
+      for (int l = 0; l < W; ++l) {
+        const Vec3 x = p.vertices_folded_m[vid(wall_ring, l)];
+        const Vec3 at(scale * x.x(), scale * x.y(), z);
+        p.vertices_flat_m.emplace_back(centre + Vec2(at.x(), from_below ? -at.y() : at.y()));
+        p.vertices_folded_m.push_back(at);
+      }
+    }
+    std::vector<int> hub;
+    for (int l = 0; l < W; ++l) hub.push_back(d.hub0 + (from_below ? W - 1 - l : l));
+    p.faces.push_back(hub);
+    for (int l = 0; l < W; ++l) {
+      const int h0 = d.hub0 + l, h1 = d.hub0 + (l + 1) % W, r0 = d.ring0 + l,
+                r1 = d.ring0 + (l + 1) % W;
+      p.faces.push_back(from_below ? std::vector<int>{h0, h1, r1, r0}
+                                   : std::vector<int>{h0, r0, r1, h1});
+    }
+    return d;
+  };
+  const double away = 1.2 * rho_base + 2 * s.base_radius;
+  const Disc cap = add_disc(0, Vec2(-away, 0), false);
+  const Disc base = add_disc(B, Vec2(-away, 2.5 * s.base_radius), true);
 
   p.edges = edges_from_faces(p.faces);
   std::map<std::pair<int, int>, int> edge_of;
@@ -153,9 +181,16 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
       set(p.edges[edge(vid(r, l), vid(r, l + 1))], sgn, s.axial_fold_angle);
     }
   }
-  for (int l = 0; l < W; ++l) {  // the top band's top edges to the cap's sides
-    const int cap_side = edge(cap0 + l, cap0 + (l + 1) % W);
-    p.seams.push_back({edge(vid(0, l), vid(0, l + 1)), cap_side});
+  for (const auto& [d, ring, band] : {std::tuple{cap, 0, 0}, std::tuple{base, B, B - 1}}) {
+    for (int l = 0; l < W; ++l) {  // the disc's rim to the wall's ring
+      p.seams.push_back(
+          {edge(vid(ring, l), vid(ring, l + 1)), edge(d.ring0 + l, d.ring0 + (l + 1) % W)});
+    }
+    for (int l = 1; l < W; ++l) {  // pleats on the generators' azimuths
+      PatternEdge& e = p.edges[edge(d.hub0 + l, d.ring0 + l)];
+      set(e, sign(band, l - 1, band + 1, l - 1), s.pleat_fold_angle);
+    }
+    p.edges[edge(d.hub0, d.ring0)].assignment = EdgeAssignment::Join;  // mid-facet
   }
   derive_edge_faces(p, "<cone>");
   return p;
