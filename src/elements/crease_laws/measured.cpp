@@ -183,12 +183,12 @@ std::string MeasuredCreaseLaw::describe() const {
 RelaxingCreaseLaw::RelaxingCreaseLaw(std::shared_ptr<const CreaseLaw> base, double coefficient,
                                      double time_constant, double age, double reference_age,
                                      const std::string& file, const std::string& field)
-    : base_(std::move(base)),
+    : WrappedCreaseLaw(std::move(base)),
       c_(coefficient),
       tau_(time_constant),
       age_(age),
       age_ref_(reference_age) {
-  if (!base_) throw InputError(file, field, "needs a base crease law");
+  if (!law_) throw InputError(file, field, "needs a base crease law");
   if (!std::isfinite(c_)) throw InputError(file, field + ".coefficient_deg", "must be finite");
   if (!(tau_ > 0) || !std::isfinite(tau_)) {
     throw InputError(file, field + ".time_constant_s", fmt::format("{} must be > 0 s", tau_));
@@ -207,26 +207,26 @@ double RelaxingCreaseLaw::shift(double t) const {
 }
 
 double RelaxingCreaseLaw::signed_shift(const ElementHistory& history, double t) const {
-  if (base_->direction_relative()) return shift(t);
-  return base_->rest_angle(history, t) < 0 ? -shift(t) : shift(t);
+  if (law_->direction_relative()) return shift(t);
+  return law_->rest_angle(history, t) < 0 ? -shift(t) : shift(t);
 }
 
 MomentSample RelaxingCreaseLaw::evaluate(double phi, const ElementHistory& history,
                                          double t) const {
-  return base_->evaluate(phi + signed_shift(history, t), history, t);
+  return law_->evaluate(phi + signed_shift(history, t), history, t);
 }
 
 double RelaxingCreaseLaw::rest_angle(const ElementHistory& history, double t) const {
-  return base_->rest_angle(history, t) - signed_shift(history, t);
+  return law_->rest_angle(history, t) - signed_shift(history, t);
 }
 
 double RelaxingCreaseLaw::energy(double phi, const ElementHistory& history, double t) const {
-  return base_->energy(phi + signed_shift(history, t), history, t);
+  return law_->energy(phi + signed_shift(history, t), history, t);
 }
 
 std::string RelaxingCreaseLaw::describe() const {
   return fmt::format("{} relaxing by {} deg per e-fold (tau {} s, age {} s, reference {} s)",
-                     base_->describe(), c_ / kDegToRad, tau_, age_, age_ref_);
+                     law_->describe(), c_ / kDegToRad, tau_, age_, age_ref_);
 }
 
 }  // namespace finseg

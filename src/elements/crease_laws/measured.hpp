@@ -12,6 +12,7 @@
 #include "core/cubic_spline.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/crease_data.hpp"
+#include "elements/crease_laws/wrapped.hpp"
 
 namespace finseg {
 
@@ -86,7 +87,7 @@ class MeasuredCreaseLaw final : public CreaseLaw {
 /// Delta(t) = c ln((1 + (age + t)/tau) / (1 + age_ref/tau)). c: rad per e-fold of time (> 0:
 /// the crease opens), tau > 0 (s), age >= 0: age of the crease at t = 0 (s), age_ref >= 0:
 /// age at which the base law holds unshifted (s; usually the age when it was measured).
-class RelaxingCreaseLaw final : public CreaseLaw {
+class RelaxingCreaseLaw final : public WrappedCreaseLaw {
  public:
   RelaxingCreaseLaw(std::shared_ptr<const CreaseLaw> base, double coefficient, double time_constant,
                     double age, double reference_age, const std::string& file = "<api>",
@@ -95,9 +96,6 @@ class RelaxingCreaseLaw final : public CreaseLaw {
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
-  OpeningRule opening_rule() const override { return base_->opening_rule(); }
-  bool direction_relative() const override { return base_->direction_relative(); }
-  std::vector<std::string> data_files() const override { return base_->data_files(); }
   std::string describe() const override;
 
  private:
@@ -105,7 +103,6 @@ class RelaxingCreaseLaw final : public CreaseLaw {
   /// the signed angle, the opening direction is taken from the sign of the base's rest angle.
   double signed_shift(const ElementHistory& history, double t) const;
 
-  std::shared_ptr<const CreaseLaw> base_;
   double c_, tau_, age_, age_ref_;
 };
 

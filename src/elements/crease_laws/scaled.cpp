@@ -7,7 +7,7 @@
 namespace finseg {
 
 ScaledCreaseLaw::ScaledCreaseLaw(std::shared_ptr<const CreaseLaw> law, double share)
-    : law_(std::move(law)), share_(share) {}
+    : WrappedCreaseLaw(std::move(law)), share_(share) {}
 
 MomentSample ScaledCreaseLaw::evaluate(double phi, const ElementHistory& history, double t) const {
   const MomentSample m = law_->evaluate(phi, history, t);

@@ -6,24 +6,20 @@
 #include <string>
 #include <vector>
 
-#include "elements/crease_law.hpp"
+#include "elements/crease_laws/wrapped.hpp"
 
 namespace finseg {
 
-class ScaledCreaseLaw final : public CreaseLaw {
+class ScaledCreaseLaw final : public WrappedCreaseLaw {
  public:
   /// `share` > 0 multiplies moment, stiffness and energy; angles and history are the law's.
   ScaledCreaseLaw(std::shared_ptr<const CreaseLaw> law, double share);
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
-  OpeningRule opening_rule() const override { return law_->opening_rule(); }
-  bool direction_relative() const override { return law_->direction_relative(); }
-  std::vector<std::string> data_files() const override { return law_->data_files(); }
   std::string describe() const override;
 
  private:
-  std::shared_ptr<const CreaseLaw> law_;
   double share_;
 };
 

@@ -12,7 +12,7 @@ namespace finseg {
 
 ShiftedCreaseLaw::ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double shift_start,
                                    double shift_end, double ramp)
-    : law_(std::move(law)),
+    : WrappedCreaseLaw(std::move(law)),
       start_(shift_start),
       end_(shift_end),
       ramp_(ramp),

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "elements/crease_law.hpp"
+#include "elements/crease_laws/wrapped.hpp"
 
 namespace finseg {
 
-class ShiftedCreaseLaw final : public CreaseLaw {
+class ShiftedCreaseLaw final : public WrappedCreaseLaw {
  public:
   /// The rest angle r(t) = rest + shift(t) goes from rest + `shift_start` (t = 0) to rest +
   /// `shift_end` (t >= `ramp`) with tan(r/2) linear in t (rad in the law's angle, |r| < pi);
@@ -28,14 +28,10 @@ class ShiftedCreaseLaw final : public CreaseLaw {
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
-  OpeningRule opening_rule() const override { return law_->opening_rule(); }
-  bool direction_relative() const override { return law_->direction_relative(); }
-  std::vector<std::string> data_files() const override { return law_->data_files(); }
   std::string describe() const override;
   double shift(double t) const;  ///< rad
 
  private:
-  std::shared_ptr<const CreaseLaw> law_;
   double start_, end_, ramp_;
   double rest_;  ///< the law's rest angle for a fresh history, rad
 };
