@@ -130,6 +130,7 @@ CreasePattern zfolded_tube_crease_pattern(int facets, int rows, double radius, d
                                             : EdgeAssignment::Flat;
   }
   close_tube_ends(p, n, rows, radius, length);
+  derive_edge_faces(p, "<tube>");
   return p;
 }
 
