@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "cli_test_util.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/tube_pattern.hpp"
 #include "scene/scene_reader.hpp"
@@ -42,6 +43,31 @@ TEST(ExampleTube, ZFoldCreasesAlternateAndCapsCloseTheTube) {
   const int v = static_cast<int>(p.vertices_flat_m.size()) - (rows + 1) - 2 * n;
   const int e = static_cast<int>(p.edges.size() - p.seams.size());
   EXPECT_EQ(v - e + static_cast<int>(p.faces.size()), 2);
+}
+
+// `finseg pattern tube` writes the Z-folded tube: its counts from the construction (below);
+// bad options refused with exit 2 naming the option.
+TEST(ExampleTube, CliWritesTheZFoldedTubeAndRefusesBadOptions) {
+  test::TempDir dir;
+  test::CliResult r = test::run_finseg(
+      dir,
+      "pattern tube --facets 8 --rows 4 --radius 0.02 --length 0.2 --fold-angle 60 --out t.fold");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = test::run_finseg(dir, "pattern check t.fold");
+  EXPECT_EQ(r.code, 0) << r.err;
+  // Vertices 5 * 9 + 16 = 61; faces 32 + 2; edges: row lines 5 * 8, strip lines 4 * 9, cap
+  // sides 16 = 92; boundary: the two seam columns 8 and the tube's ends 16 and the caps' 16
+  // = 40; mountain: 4 * 7 strip creases + 3 * 4 row creases of negative
+  // angle (half of each inner row line) = 40; valley 12.
+  EXPECT_NE(r.out.find("61 vertices, 34 faces, 92 edges (40 B, 40 M, 12 V)"), std::string::npos)
+      << r.out;
+  for (const char* bad : {"--facets 2", "--rows 1 --fold-angle 30", "--fold-angle 181",
+                          "--radius 0", "--length nan"}) {
+    r = test::run_finseg(dir, std::string("pattern tube ") + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    const std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
+    EXPECT_NE(r.err.find("<cli>: " + option), std::string::npos) << r.err;
+  }
 }
 
 // The inflation scene from its straight start, 0.4 ms: a rigid-looking chamber filled from

@@ -3,6 +3,7 @@
 // crease pattern as FOLD (stdout or FILE, atomically).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -121,11 +122,22 @@ void register_tube(CLI::App* pattern) {
               "rows then meet at flat creases where the fold angle is 0)");
   c->add_option("--out", o->out, "write the FOLD file to FILE instead of standard output");
   c->callback([o] {
+    const bool zigzag = o->fold_angle_deg != 0;
+    if (o->facets < 3) throw InputError("<cli>", "--facets", fmt::format("{}; >= 3", o->facets));
+    if (o->rows < (zigzag ? 2 : 1)) {
+      throw InputError("<cli>", "--rows",
+                       fmt::format("{}; >= {}", o->rows, zigzag ? "2 with --fold-angle" : "1"));
+    }
+    require_positive(o->radius, "<cli>", "--radius", "m");
+    require_positive(o->length, "<cli>", "--length", "m");
+    if (!(std::abs(o->fold_angle_deg) <= 180)) {
+      throw InputError("<cli>", "--fold-angle",
+                       fmt::format("{}; deg in [-180, 180]", o->fold_angle_deg));
+    }
     const CreasePattern p =
-        o->fold_angle_deg == 0 && !o->caps
-            ? tube_crease_pattern(o->facets, o->rows, o->radius, o->length)
-            : zfolded_tube_crease_pattern(o->facets, o->rows, o->radius, o->length,
-                                          o->fold_angle_deg * kDegToRad);
+        !zigzag && !o->caps ? tube_crease_pattern(o->facets, o->rows, o->radius, o->length)
+                            : zfolded_tube_crease_pattern(o->facets, o->rows, o->radius, o->length,
+                                                          o->fold_angle_deg * kDegToRad);
     if (o->out.empty()) return fmt::print("{}", fold_text(p));
     write_fold(o->out, p);
     fmt::print(stderr, "wrote {}\n", o->out);
