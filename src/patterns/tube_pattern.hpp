@@ -21,8 +21,8 @@ CreasePattern tube_crease_pattern(int facets, int rows, double radius, double le
 /// mountain or valley by its sign (flat, 0, where cos(phi) = 0 or fold_angle = 0). The folded
 /// coordinates stay those of the straight tube: the creases' angles are targets (folding by
 /// simulation), as a polygonal tube has no isometric zigzag with one crease loop per fold
-/// (docs/gas.md). Both ends are closed by N-gon caps (faces rows * facets and + 1) glued on by
-/// seams.
+/// (docs/gas.md). Both ends are closed by N-gon caps glued on by seams: 0-based face
+/// rows * facets at y = 0, rows * facets + 1 at y = length.
 CreasePattern zfolded_tube_crease_pattern(int facets, int rows, double radius, double length,
                                           double fold_angle);
 
