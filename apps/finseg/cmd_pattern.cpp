@@ -3,6 +3,7 @@
 // crease pattern as FOLD (stdout or FILE, atomically).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/text.hpp"
 #include "patterns/fold_format.hpp"
+#include "patterns/tube_pattern.hpp"
 #include "patterns/zigzag_pattern.hpp"
 
 namespace finseg::cli {
@@ -98,6 +100,50 @@ void register_zigzag(CLI::App* pattern) {
   });
 }
 
+void register_tube(CLI::App* pattern) {
+  struct Options {
+    int facets = 12, rows = 8;
+    double radius = 0.025, length = 0.4, fold_angle_deg = 0;
+    bool caps = false;
+    std::string out;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* c = pattern->add_subcommand(
+      "tube", "a tube rolled from a rectangle (seamed), optionally with Z-fold creases, as FOLD");
+  c->add_option("--facets", o->facets, "flat facets around the circumference (>= 3)");
+  c->add_option("--rows", o->rows, "rows along the length (>= 1; >= 2 with --fold-angle)");
+  c->add_option("--radius", o->radius, "corner radius, m");
+  c->add_option("--length", o->length, "m");
+  c->add_option("--fold-angle", o->fold_angle_deg,
+                "Z-fold: largest fold angle of the inner row lines, deg in [-180, 180] (0: a "
+                "straight tube, rows joined)");
+  c->add_flag("--caps", o->caps,
+              "close both ends by N-gon caps glued on by seams (always with --fold-angle; the "
+              "rows then meet at flat creases where the fold angle is 0)");
+  c->add_option("--out", o->out, "write the FOLD file to FILE instead of standard output");
+  c->callback([o] {
+    const bool zigzag = o->fold_angle_deg != 0;
+    if (o->facets < 3) throw InputError("<cli>", "--facets", fmt::format("{}; >= 3", o->facets));
+    if (o->rows < (zigzag ? 2 : 1)) {
+      throw InputError("<cli>", "--rows",
+                       fmt::format("{}; >= {}", o->rows, zigzag ? "2 with --fold-angle" : "1"));
+    }
+    require_positive(o->radius, "<cli>", "--radius", "m");
+    require_positive(o->length, "<cli>", "--length", "m");
+    if (!(std::abs(o->fold_angle_deg) <= 180)) {
+      throw InputError("<cli>", "--fold-angle",
+                       fmt::format("{}; deg in [-180, 180]", o->fold_angle_deg));
+    }
+    const CreasePattern p =
+        !zigzag && !o->caps ? tube_crease_pattern(o->facets, o->rows, o->radius, o->length)
+                            : zfolded_tube_crease_pattern(o->facets, o->rows, o->radius, o->length,
+                                                          o->fold_angle_deg * kDegToRad);
+    if (o->out.empty()) return fmt::print("{}", fold_text(p));
+    write_fold(o->out, p);
+    fmt::print(stderr, "wrote {}\n", o->out);
+  });
+}
+
 }  // namespace
 
 void register_pattern(CLI::App& app) {
@@ -106,6 +152,7 @@ void register_pattern(CLI::App& app) {
   register_read(pattern, "check", "validate a FOLD file and print its counts", false);
   register_read(pattern, "info", "check, then print extent, face sizes and fold angles", true);
   register_zigzag(pattern);
+  register_tube(pattern);
 }
 
 }  // namespace finseg::cli
