@@ -191,6 +191,9 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
       set(e, sign(band, l - 1, band + 1, l - 1), s.pleat_fold_angle);
     }
     p.edges[edge(d.hub0, d.ring0)].assignment = EdgeAssignment::Join;  // mid-facet
+    for (int l = 0; l < W; ++l) {  // the hub's sides: hinges (creases resting flat)
+      p.edges[edge(d.hub0 + l, d.hub0 + (l + 1) % W)].assignment = EdgeAssignment::Mountain;
+    }
   }
   derive_edge_faces(p, "<cone>");
   return p;
