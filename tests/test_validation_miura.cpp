@@ -75,9 +75,7 @@ Folded flat_sheet(const MiuraSpec& s) {
 
 // Folds on from where the sheet is to `share` of the pattern's fold angles (static).
 void fold_to(Folded& f, double share) {
-  std::vector<double> now;
-  for (const ElementHistory& h : f.state.history) now.push_back(h.fold_angle);
-  const Model folding = folding_model(f.model, now, share, 1.0);
+  const Model folding = folding_model(f.model, f.state, share, 1.0);
   SolverSettings set;
   set.kind = SolverKind::Static;
   set.load_steps = 10;

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,12 +120,13 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
 // A run from a state file is a fresh run whose initial configuration is that state's
 // (docs/state-file.md): its poses, crease history and contact anchors, drives starting from
 // where their points are.
-void start_scene_from_state_file(const RunOptions& o, Scene& scene, State& start) {
-  start = read_state_file(o.state_file, scene.model).state;
+State start_scene_from_state_file(const RunOptions& o, Scene& scene) {
+  State start = read_state_file(o.state_file, scene.model).state;
   start.t = 0;
   start.solver = SolverMemory{};
   std::fill(start.drive_s.begin(), start.drive_s.end(), 0.0);
   scene.model = model_starting_from(scene.model, start);
+  return start;
 }
 
 // `finseg run --fold`: the scene's folding (docs/folding.md) in place of its run.
@@ -134,10 +136,8 @@ void make_folding_run(Scene& scene) {
   }
   const SolverSettings& solver = scene.folding_solver;
   const double ramp = solver.kind == SolverKind::Static ? 1.0 : scene.folding->duration;
-  const State s0 = initial_state(scene.model);
-  std::vector<double> fold0;
-  for (const ElementHistory& h : s0.history) fold0.push_back(h.fold_angle);
-  scene.model = folding_model(scene.model, fold0, scene.folding->fraction, ramp);
+  scene.model =
+      folding_model(scene.model, initial_state(scene.model), scene.folding->fraction, ramp);
   scene.solver = solver;
 }
 
@@ -190,12 +190,13 @@ void run_scene(const RunOptions& o) {
   // table or an override changed is refused; a folding run's checkpoint is not its scene's.
   const std::string hash =
       scene_inputs_hash(read_whole_file(o.scene) + (o.fold ? "\n# finseg run --fold" : ""), scene);
+  // From a state file first, so that a folding run folds on from there.
+  std::optional<State> from_file;
+  if (!o.state_file.empty() && !o.resume) from_file = start_scene_from_state_file(o, scene);
   if (o.fold) make_folding_run(scene);
-  State from_file;
-  if (!o.state_file.empty() && !o.resume) start_scene_from_state_file(o, scene, from_file);
   check_output_folder(o.out, scene);
   RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
-  State state = o.state_file.empty() || o.resume ? starting_state(o, scene, hash, rec) : from_file;
+  State state = from_file ? *from_file : starting_state(o, scene, hash, rec);
   // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
   // the step it would have tried next). summary.json keeps the scene's settings.
   SolverSettings settings = scene.solver;

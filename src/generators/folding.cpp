@@ -9,20 +9,18 @@
 
 namespace finseg {
 
-Model folding_model(const Model& m, const std::vector<double>& state0_fold, double fraction,
-                    double ramp) {
+Model folding_model(const Model& m, const State& start, double fraction, double ramp) {
   Model out = m;
   for (std::size_t e = 0; e < out.elements.size(); ++e) {
     const int c = out.elements[e].crease;
     if (c < 0) continue;
     CreaseDef& crease = out.creases[c];
     if (crease.target_fold_angle == 0 || !crease.law) continue;
-    // Shifts in the law's own angle: from its rest to the fold angle at t = 0, and to the
-    // target's share.
+    // Rest angles in the law's own angle: the fold angle at t = 0, then the target's share.
     const double s = law_direction(crease);
-    const double rest = crease.law->rest_angle(ElementHistory{}, 0);
-    const double from = s * state0_fold[e], to = s * fraction * crease.target_fold_angle;
-    crease.law = std::make_shared<ShiftedCreaseLaw>(crease.law, from - rest, to - rest, ramp);
+    const double from = s * start.history[e].fold_angle,
+                 to = s * fraction * crease.target_fold_angle;
+    crease.law = std::make_shared<ShiftedCreaseLaw>(crease.law, from, to, ramp);
     // The solver's force scale: the crease's moment at its start once fully driven, over the
     // sheet's length.
     const double moment = crease.law->evaluate(from, ElementHistory{}, ramp).moment;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/model.hpp"
+#include "model/state.hpp"
 
 namespace finseg {
 
@@ -18,8 +19,7 @@ struct FoldingSpec {
 /// target from t = `ramp` on (the law's shape about its rest is kept); drives go slack (no
 /// gauge stiffness, no travel) so that nothing holds the sheet where it started. Bodies,
 /// elements and drives keep their number and order: a state of this model is a state of `m`.
-/// `state0_fold` gives each element's fold angle at t = 0 (State::history).
-Model folding_model(const Model& m, const std::vector<double>& state0_fold, double fraction,
-                    double ramp);
+/// `start` (a state of `m`) is where the folding starts (its crease fold angles).
+Model folding_model(const Model& m, const State& start, double fraction, double ramp);
 
 }  // namespace finseg

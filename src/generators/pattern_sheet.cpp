@@ -111,10 +111,9 @@ CreaseDef pattern_crease(const PatternEdge& pe, double target, std::shared_ptr<c
   c.direction = a == EdgeAssignment::Mountain ? 1.0
                 : a == EdgeAssignment::Valley ? -1.0
                                               : (c.target_fold_angle < 0 ? -1.0 : 1.0);
+  c.law = law;  // law_direction reads the law's angle convention
   if (spec.laws_rest_at_pattern) {
-    const double target =
-        (law->direction_relative() ? crease_direction(c) : 1.0) * c.target_fold_angle;
-    law = std::make_shared<ShiftedCreaseLaw>(law, target - law->rest_angle(ElementHistory{}, 0));
+    law = std::make_shared<ShiftedCreaseLaw>(law, law_direction(c) * c.target_fold_angle);
   }
   c.law = std::make_shared<ScaledCreaseLaw>(law, len / spec.crease_law_length);
   return c;

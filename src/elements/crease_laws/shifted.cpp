@@ -10,20 +10,20 @@
 
 namespace finseg {
 
-ShiftedCreaseLaw::ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double shift_start,
-                                   double shift_end, double ramp)
+ShiftedCreaseLaw::ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double rest_start,
+                                   double rest_end, double ramp)
     : WrappedCreaseLaw(std::move(law)),
-      start_(shift_start),
-      end_(shift_end),
+      law_rest_(law_->rest_angle(ElementHistory{}, 0)),
+      rest_start_(rest_start),
+      rest_end_(rest_end),
       ramp_(ramp),
-      rest_(law_->rest_angle(ElementHistory{}, 0)) {}
+      half_start_(std::tan(rest_start / 2)),
+      half_end_(std::tan(rest_end / 2)) {}
 
 double ShiftedCreaseLaw::shift(double t) const {
-  if (ramp_ <= 0 || t >= ramp_) return end_;
-  const double lambda = std::clamp(t / ramp_, 0.0, 1.0);
-  const double half =
-      (1 - lambda) * std::tan((rest_ + start_) / 2) + lambda * std::tan((rest_ + end_) / 2);
-  return 2 * std::atan(half) - rest_;
+  if (ramp_ <= 0 || t >= ramp_) return rest_end_ - law_rest_;
+  const double lambda = std::max(t / ramp_, 0.0);
+  return 2 * std::atan((1 - lambda) * half_start_ + lambda * half_end_) - law_rest_;
 }
 
 MomentSample ShiftedCreaseLaw::evaluate(double phi, const ElementHistory& history, double t) const {
@@ -39,10 +39,11 @@ double ShiftedCreaseLaw::energy(double phi, const ElementHistory& history, doubl
 }
 
 std::string ShiftedCreaseLaw::describe() const {
-  if (ramp_ <= 0)
-    return fmt::format("{} shifted by {:.6g} deg", law_->describe(), end_ / kDegToRad);
-  return fmt::format("{} shifted from {:.6g} to {:.6g} deg over {:.6g}", law_->describe(),
-                     start_ / kDegToRad, end_ / kDegToRad, ramp_);
+  if (ramp_ <= 0) {
+    return fmt::format("{} resting at {:.6g} deg", law_->describe(), rest_end_ / kDegToRad);
+  }
+  return fmt::format("{} resting from {:.6g} to {:.6g} deg over {:.6g}", law_->describe(),
+                     rest_start_ / kDegToRad, rest_end_ / kDegToRad, ramp_);
 }
 
 }  // namespace finseg

@@ -16,15 +16,15 @@ namespace finseg {
 
 class ShiftedCreaseLaw final : public WrappedCreaseLaw {
  public:
-  /// The rest angle r(t) = rest + shift(t) goes from rest + `shift_start` (t = 0) to rest +
-  /// `shift_end` (t >= `ramp`) with tan(r/2) linear in t (rad in the law's angle, |r| < pi);
-  /// `ramp` <= 0: shift_end at all times. t is the law's time (s, or the static solver's
-  /// load scale).
-  ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double shift_start, double shift_end,
+  /// The rest angle r(t) (rad in the law's angle, |r| < pi) goes from `rest_start` (t = 0)
+  /// to `rest_end` (t >= `ramp`) with tan(r/2) linear in t; `ramp` <= 0: rest_end at all
+  /// times. t is the law's time (s, or the static solver's load scale). The shift is taken
+  /// from the law's rest angle for a fresh history.
+  ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double rest_start, double rest_end,
                    double ramp);
-  /// Constant shift.
-  ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double shift)
-      : ShiftedCreaseLaw(std::move(law), shift, shift, 0) {}
+  /// Resting at `rest` (rad in the law's angle) at all times.
+  ShiftedCreaseLaw(std::shared_ptr<const CreaseLaw> law, double rest)
+      : ShiftedCreaseLaw(std::move(law), rest, rest, 0) {}
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
@@ -32,8 +32,10 @@ class ShiftedCreaseLaw final : public WrappedCreaseLaw {
   double shift(double t) const;  ///< rad
 
  private:
-  double start_, end_, ramp_;
-  double rest_;  ///< the law's rest angle for a fresh history, rad
+  double law_rest_;               ///< the law's rest angle for a fresh history, rad
+  double rest_start_, rest_end_;  ///< rad
+  double ramp_;
+  double half_start_, half_end_;  ///< tan(rest / 2) at the start and at the end
 };
 
 }  // namespace finseg
