@@ -60,8 +60,6 @@ std::vector<int> parse_ints(const std::string& text, const char* option) {
   return out;
 }
 
-const OptionNaming kCliNames{"<cli>", "--", '-'};
-
 void apply_solver(SolverOptions& o) {
   o.settings.kind = solver_kind_from_name(o.kind).value_or(SolverKind::Static);
 }

@@ -9,10 +9,13 @@
 
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
+#include "core/text.hpp"
 #include "model/segment_shape.hpp"
 #include "patterns/cone_pattern.hpp"
 #include "patterns/fold_format.hpp"
 #include "patterns/miura_pattern.hpp"
+#include "scene/gen_options.hpp"
+#include "scene/scene_parts.hpp"
 #include "writers/atomic_write.hpp"
 
 namespace finseg::cli {
@@ -42,13 +45,10 @@ void add_sheet_options(CLI::App* c, SheetOptions& o) {
 }
 
 void check_sheet(const SheetOptions& o) {
-  auto positive = [](double v, const char* option, const char* unit) {
-    if (!(v > 0)) throw InputError("<cli>", option, fmt::format("{} {}; must be > 0", v, unit));
-  };
-  positive(o.thickness, "--thickness", "m");
-  positive(o.modulus, "--modulus", "Pa");
-  positive(o.density, "--density", "kg/m^3");
-  positive(o.crease_stiffness, "--crease-stiffness", "N m/rad/m");
+  require_positive(o.thickness, "<cli>", "--thickness", "m");
+  require_positive(o.modulus, "<cli>", "--modulus", "Pa");
+  require_positive(o.density, "<cli>", "--density", "kg/m^3");
+  require_positive(o.crease_stiffness, "<cli>", "--crease-stiffness", "N m/rad/m");
   if (o.subdivisions < 1 || o.subdivisions > 64) {
     throw InputError("<cli>", "--subdivisions",
                      fmt::format("{}; allowed range 1..64", o.subdivisions));
@@ -107,17 +107,8 @@ void register_miura(CLI::App* gen) {
     s->sector_angle = angles->first * kDegToRad;
     s->fold_angle = angles->second * kDegToRad;
     CreasePattern p;
-    try {
-      p = miura_crease_pattern(*s);
-    } catch (const InputError& e) {
-      throw InputError("<cli>",
-                       "--" + std::string(e.field() == "side_a"         ? "side-a"
-                                          : e.field() == "side_b"       ? "side-b"
-                                          : e.field() == "sector_angle" ? "sector-angle"
-                                          : e.field() == "fold_angle"   ? "fold-angle"
-                                                                        : e.field()),
-                       e.what());
-    }
+    in_scene_file(
+        "<cli>", [&] { p = miura_crease_pattern(*s); }, kCliNames);
     // Face 1 (row 0, column 0) clamped; the last column's first face pulled along +x until
     // the sheet is open to 15 degrees.
     const Vec2 pulled = face_centroid(p, s->columns - 1);
@@ -169,9 +160,9 @@ void register_cone(CLI::App* gen) {
       ->capture_default_str();
   c->add_option("--axial-folds", s->axial_folds, "ring creases between top and base")
       ->capture_default_str();
-  c->add_option("--pleat-angle", angles->first, "stowed fold of the generators, deg (0, 180)")
+  c->add_option("--pleat-fold-angle", angles->first, "stowed fold of the generators, deg (0, 180)")
       ->capture_default_str();
-  c->add_option("--axial-angle", angles->second, "stowed fold of the rings, deg (0, 180)")
+  c->add_option("--axial-fold-angle", angles->second, "stowed fold of the rings, deg (0, 180)")
       ->capture_default_str();
   c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
       ->capture_default_str();
@@ -184,13 +175,8 @@ void register_cone(CLI::App* gen) {
     s->pleat_fold_angle = angles->first * kDegToRad;
     s->axial_fold_angle = angles->second * kDegToRad;
     CreasePattern p;
-    try {
-      p = cone_crease_pattern(*s);
-    } catch (const InputError& e) {
-      std::string f = e.field();
-      for (char& ch : f) ch = ch == '_' ? '-' : ch;
-      throw InputError("<cli>", "--" + f, e.what());
-    }
+    in_scene_file(
+        "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
     const int base = cone_hub_face(*s, false) + 1, cap = cone_hub_face(*s, true);
     const Vec2 top = face_centroid(p, cap);
     const std::string scene_name = fs::path(o->out).filename().string();

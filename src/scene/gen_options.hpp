@@ -20,6 +20,9 @@ struct OptionNaming {
   std::string operator()(const std::string& key) const;
 };
 
+/// The command line's spelling: --words-with-dashes, errors naming "<cli>".
+inline const OptionNaming kCliNames{"<cli>", "--", '-'};
+
 /// Solver kind of a name: static, implicit or explicit; nullopt for any other word.
 std::optional<SolverKind> solver_kind_from_name(const std::string& name);
 
