@@ -8,6 +8,7 @@
 
 #include "contact_test_util.hpp"
 #include "core/so3.hpp"
+#include "elements/chamber_gas.hpp"
 #include "elements/chamber_volume.hpp"
 
 namespace finseg::test {
@@ -78,6 +79,16 @@ inline void join_box_edges(Model& m, const std::vector<ChamberFace>& faces, doub
       }
     }
   }
+}
+
+/// Adds chamber `c` to `m` and finishes the model as a scene would: length scale `length`
+/// (m), DOFs, validation, the chamber's closed surface.
+inline void add_chamber_and_finish(Model& m, const ChamberDef& c, double length) {
+  m.chambers.push_back(c);
+  m.sheet.length = length;
+  m.finalize_dofs();
+  validate(m);
+  prepare_chambers(m);
 }
 
 }  // namespace finseg::test

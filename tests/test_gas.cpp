@@ -18,6 +18,7 @@ namespace finseg {
 namespace {
 
 using test::add_box;
+using test::add_chamber_and_finish;
 using test::add_plate;
 using test::join_box_edges;
 
@@ -32,11 +33,7 @@ Model rigid_box(const ChamberDef& gas) {
   c.name = "box";
   c.faces = add_box(m, kA, kB, kC, true);
   add_plate(m, "loose", Vec3(0.1, 0.1, 1e-3), Vec3(5, 5, 5));
-  m.chambers.push_back(c);
-  m.sheet.length = 0.5;
-  m.finalize_dofs();
-  validate(m);
-  prepare_chambers(m);
+  add_chamber_and_finish(m, c, 0.5);
   return m;
 }
 
@@ -208,11 +205,7 @@ TEST(Gas, InflationOfAFloatingBoxConservesEnergy) {
   // (the former 2e-6 kg/s gave 100 times less, 12 Pa, which is what the code computed).
   const double mdot = 2e-4, T_in = 300;
   c.inflow = {{0, 1}, {mdot, mdot}, {T_in, T_in}};
-  m.chambers.push_back(c);
-  m.sheet.length = 0.1;
-  m.finalize_dofs();
-  validate(m);
-  prepare_chambers(m);
+  add_chamber_and_finish(m, c, 0.1);
   State st = initial_state(m);
   SolverSettings set;
   set.kind = SolverKind::Explicit;
@@ -245,11 +238,7 @@ TEST(Gas, StaticSolverLoadsTheGasMass) {
   join_box_edges(m, c.faces, k, 10.0);
   const double mass = 1e-5;  // about 840 Pa in 1 litre
   c.inflow = {{0, 1}, {mass, mass}, {300, 300}};
-  m.chambers.push_back(c);
-  m.sheet.length = 0.1;
-  m.finalize_dofs();
-  validate(m);
-  prepare_chambers(m);
+  add_chamber_and_finish(m, c, 0.1);
   State st = initial_state(m);
   SolverSettings set;
   set.kind = SolverKind::Static;

@@ -36,15 +36,11 @@ Scene inflated_box() {
   m.bodies[c.faces[0].body].fixed = false;  // the lid
   test::join_box_edges(m, c.faces, 2e4, 2.0);
   c.inflow = {{0, 1}, {kMdot, kMdot}, {kTin, kTin}};
-  m.chambers.push_back(c);
   ProbeDef energy;
   energy.name = "energy";
   energy.kind = ProbeKind::Energy;
   m.probes.push_back(energy);
-  m.sheet.length = 0.1;
-  m.finalize_dofs();
-  validate(m);
-  prepare_chambers(m);
+  test::add_chamber_and_finish(m, c, 0.1);
   scene.solver.kind = SolverKind::Explicit;
   scene.solver.t_end = 0.05;
   scene.solver.output_interval = 0.005;

@@ -24,11 +24,7 @@ Model inflating_box() {
   test::join_box_edges(m, c.faces, 2e4, 2.0);
   c.inflow = {{0, 1}, {2e-4, 2e-4}, {300, 300}};
   c.vents = {{2e-5, 0.8, 0}};
-  m.chambers.push_back(c);
-  m.sheet.length = 0.1;
-  m.finalize_dofs();
-  validate(m);
-  prepare_chambers(m);
+  test::add_chamber_and_finish(m, c, 0.1);
   return m;
 }
 
