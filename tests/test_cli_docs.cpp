@@ -9,6 +9,7 @@
 #include "cli_test_util.hpp"
 #include "generators/zigzag.hpp"
 #include "scene/scene_reader.hpp"
+#include "test_paths.hpp"
 
 namespace finseg::test {
 namespace {

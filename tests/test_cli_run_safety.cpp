@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli_test_util.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

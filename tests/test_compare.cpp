@@ -16,6 +16,7 @@
 
 #include "comparison/compare.hpp"
 #include "core/error.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

@@ -10,6 +10,7 @@
 #include "patterns/tube_pattern.hpp"
 #include "scene/scene_reader.hpp"
 #include "solvers/solver.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

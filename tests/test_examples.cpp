@@ -8,6 +8,7 @@
 #include "generators/zigzag_conditions.hpp"
 #include "model_compare.hpp"
 #include "scene/scene_reader.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

@@ -20,6 +20,7 @@
 #include "identification/bending.hpp"
 #include "identification/crease.hpp"
 #include "solvers/solver.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

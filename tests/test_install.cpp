@@ -8,6 +8,7 @@
 
 #include "cli_test_util.hpp"
 #include "core/version.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {

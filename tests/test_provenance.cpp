@@ -11,6 +11,7 @@
 
 #include "cli_test_util.hpp"
 #include "core/version.hpp"
+#include "test_paths.hpp"
 #include "writers/provenance.hpp"
 
 namespace finseg {

@@ -20,6 +20,7 @@
 #include "patterns/segment_mesh.hpp"
 #include "scene/scene_reader.hpp"
 #include "solvers/solver.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {
