@@ -45,6 +45,7 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
     }
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
+  if (s.bending_rigidity) require_positive(*s.bending_rigidity, src, "bending_rigidity", "N m");
   if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
     throw InputError(src, "finseg:seams",
                      "a seam joins edges that lie apart on the flat sheet: the pattern must "
@@ -236,6 +237,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     e.R_outer_F = sides[0].frame();
     e.R_inner_E = sides[1].frame();
     e.K = plate_joint_stiffness(spec.youngs_modulus, spec.poisson_ratio, spec.thickness, len, h);
+    if (spec.bending_rigidity) e.K[3] = e.K[4] = *spec.bending_rigidity * len / h;
     e.C = spec.damping_time * e.K;
     e.name = l.seam < 0 ? fmt::format("side_c{}_c{}", l.left, l.right)
                         : fmt::format("seam{}_c{}_c{}", l.seam + 1, l.left, l.right);
@@ -269,8 +271,9 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, cell_sides);
     m.elements.push_back(e);
   }
-  const double D = spec.youngs_modulus * std::pow(spec.thickness, 3) /
-                   (12 * (1 - spec.poisson_ratio * spec.poisson_ratio));
+  const double D =
+      spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
+                                     (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
     m.plate_cells.push_back(plate_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),

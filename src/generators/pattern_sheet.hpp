@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "model/model.hpp"
@@ -18,6 +19,10 @@ class CreaseLaw;
 /// Material, discretisation and creases of a sheet cut from a pattern. SI units.
 struct PatternSheetSpec {
   double thickness = 1e-4, youngs_modulus = 3e9, poisson_ratio = 0.3, density = 800;
+  /// Plate bending rigidity D (N m) in place of E t^3 / (12 (1 - nu^2)), e.g. a laminate's:
+  /// the joints' bending and twist springs and the cell corrections use it; stretching and
+  /// shear keep E and t.
+  std::optional<double> bending_rigidity;
   int subdivisions = 1;  ///< each face into n x n cells, 1..64
   /// Crease laws by assignment (M, V; F and U creases use them by the sign of their fold
   /// angle when given, else they are plate joints). Each law's moment is for a crease of

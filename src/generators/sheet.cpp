@@ -66,30 +66,6 @@ void validate_spec(const SheetSpec& s) {
   if (!(s.damping_time >= 0)) throw InputError("<api>", "damping_time", "must be >= 0 s");
 }
 
-// Cell boundaries of one panel [a, b]: uniform, weighted, or graded towards creases.
-std::vector<double> panel_cells(const SheetSpec& s, double a, double b, bool crease_a,
-                                bool crease_b) {
-  const int n = s.cells_along;
-  std::vector<double> w(n, 1.0);
-  if (!s.cell_weights.empty()) {
-    w = s.cell_weights;
-  } else if (s.crease_refinement != 1.0 && n > 1) {
-    // Geometric grading: cells next to a crease are 1/refinement of the middle cell.
-    for (int j = 0; j < n; ++j) {
-      const double da = crease_a ? j : n;
-      const double db = crease_b ? n - 1 - j : n;
-      const double d = std::min(da, db) / std::max(1.0, (n - 1) / 2.0);
-      w[j] = std::pow(s.crease_refinement, std::min(1.0, d)) / s.crease_refinement;
-    }
-  }
-  double total = 0;
-  for (double x : w) total += x;
-  std::vector<double> bounds{a};
-  for (double x : w) bounds.push_back(bounds.back() + (b - a) * x / total);
-  bounds.back() = b;
-  return bounds;
-}
-
 struct Joint {
   double s;       // position along the sheet, m
   double h;       // length of sheet the joint stands for, m
@@ -123,6 +99,29 @@ Mat3 rot_y(double a) {
 
 }  // namespace
 
+std::vector<double> panel_cell_bounds(const SheetSpec& s, double a, double b, bool crease_a,
+                                      bool crease_b) {
+  const int n = s.cells_along;
+  std::vector<double> w(n, 1.0);
+  if (!s.cell_weights.empty()) {
+    w = s.cell_weights;
+  } else if (s.crease_refinement != 1.0 && n > 1) {
+    // Geometric grading: cells next to a crease are 1/refinement of the middle cell.
+    for (int j = 0; j < n; ++j) {
+      const double da = crease_a ? j : n;
+      const double db = crease_b ? n - 1 - j : n;
+      const double d = std::min(da, db) / std::max(1.0, (n - 1) / 2.0);
+      w[j] = std::pow(s.crease_refinement, std::min(1.0, d)) / s.crease_refinement;
+    }
+  }
+  double total = 0;
+  for (double x : w) total += x;
+  std::vector<double> bounds{a};
+  for (double x : w) bounds.push_back(bounds.back() + (b - a) * x / total);
+  bounds.back() = b;
+  return bounds;
+}
+
 Model build_sheet_model(const SheetSpec& spec) {
   validate_spec(spec);
   Model m;
@@ -136,14 +135,16 @@ Model build_sheet_model(const SheetSpec& spec) {
   panel_start.push_back(spec.length);
   std::vector<Joint> joints;
   for (int p = 0; p < panels; ++p) {
-    const auto b = panel_cells(spec, panel_start[p], panel_start[p + 1], p > 0, p < panels - 1);
+    const auto b =
+        panel_cell_bounds(spec, panel_start[p], panel_start[p + 1], p > 0, p < panels - 1);
     for (size_t j = 0; j + 1 < b.size(); ++j)
       joints.push_back({0.5 * (b[j] + b[j + 1]), b[j + 1] - b[j]});
     if (p < panels - 1) {
-      const double h = 0.5 * std::min(b[b.size() - 1] - b[b.size() - 2],
-                                      panel_cells(spec, panel_start[p + 1], panel_start[p + 2],
-                                                  true, p + 1 < panels - 1)[1] -
-                                          panel_start[p + 1]);
+      const double h =
+          0.5 * std::min(b[b.size() - 1] - b[b.size() - 2],
+                         panel_cell_bounds(spec, panel_start[p + 1], panel_start[p + 2], true,
+                                           p + 1 < panels - 1)[1] -
+                             panel_start[p + 1]);
       joints.push_back({panel_start[p + 1], h, p});
     }
   }

@@ -49,6 +49,12 @@ struct SheetSpec {
   Mat3 R_W0 = Mat3::Identity();  ///< orientation of the first panel (x along s, y across)
 };
 
+/// Cell boundaries along s of the panel [a, b] (m, a and b included): uniform, by
+/// `cell_weights`, or graded towards the panel's creases (crease_a, crease_b) by
+/// `crease_refinement`. The bending joints sit at the cells' centres.
+std::vector<double> panel_cell_bounds(const SheetSpec& spec, double a, double b, bool crease_a,
+                                      bool crease_b);
+
 /// Builds bodies, elements and initial poses. Throws InputError on impossible specs.
 Model build_sheet_model(const SheetSpec& spec);
 

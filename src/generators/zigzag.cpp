@@ -154,6 +154,11 @@ SheetSpec zigzag_sheet(const ZigzagSpec& s) {
 
 Model build_zigzag_model(const ZigzagSpec& s) {
   Model m = build_sheet_model(zigzag_sheet(s));
+  add_zigzag_rig(m, s);
+  return m;
+}
+
+void add_zigzag_rig(Model& m, const ZigzagSpec& s) {
   if (s.gravity) m.gravity_W = Vec3(0, 0, -9.81);
   m.contact = s.contact_settings;
   m.contact.enabled = s.contact;
@@ -176,7 +181,6 @@ Model build_zigzag_model(const ZigzagSpec& s) {
   m.probes.push_back({"reaction", ProbeKind::Reaction, -1, Vec3::Zero(), -1});
   m.probes.push_back({"energy", ProbeKind::Energy, -1, Vec3::Zero(), -1});
   validate(m);
-  return m;
 }
 
 }  // namespace finseg

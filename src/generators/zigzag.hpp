@@ -74,4 +74,9 @@ double zigzag_default_travel(const ZigzagSpec& spec);
 /// `reaction` and `energy`, and contact between panels.
 Model build_zigzag_model(const ZigzagSpec& spec);
 
+/// The test rig of build_zigzag_model on a strip model `m` of `spec` (material coordinates
+/// s along, y across from the strip's corner; panels numbered as the spec's): gravity,
+/// contact, the gauge drive at the pulled crease and the probes. Validates `m`.
+void add_zigzag_rig(Model& m, const ZigzagSpec& spec);
+
 }  // namespace finseg

@@ -1,0 +1,169 @@
+// The paper's strip built two ways: `gen zigzag`'s generator and the strip's FOLD pattern
+// through the pattern path (docs/zigzag.md, "The strip through the pattern path"). The same
+// strip to round-off (cells, mass, crease laws, clamps, gauge); the same rigid-panel linkage;
+// with bending panels two discretisations of one beam that converge to one limit, the
+// generator's at second order, the pattern path's at first (docs/stiffness.md, "Creases
+// on cell sides: first order").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "generators/zigzag_conditions.hpp"
+#include "patterns/pattern_checks.hpp"
+#include "patterns/zigzag_pattern.hpp"
+#include "probes/pull_test.hpp"
+#include "zigzag_linkage.hpp"
+
+namespace finseg {
+namespace {
+
+double total_mass(const Model& m, bool fixed_only) {
+  double sum = 0;
+  for (const BodyDef& b : m.bodies) {
+    if (!fixed_only || b.fixed) sum += b.mass;
+  }
+  return sum;
+}
+
+// Material x of each element's attachment point on its outer body, bending joints or
+// creases, sorted.
+std::vector<double> joint_positions(const Model& m, bool creases) {
+  std::vector<double> x;
+  for (const ElementDef& e : m.elements) {
+    if ((e.crease >= 0) != creases) continue;
+    x.push_back(m.bodies[e.outer].centroid_M->x() + e.c_outer_B.x());
+  }
+  std::sort(x.begin(), x.end());
+  return x;
+}
+
+TEST(ZigzagFoldPath, SameCellsMassLawsClampsAndGauge) {
+  for (int n : {1, 4}) {
+    SCOPED_TRACE(paper_condition_label(n));
+    const ZigzagSpec spec = paper_condition(n);
+    CreasePattern p = zigzag_crease_pattern(spec, true);
+    EXPECT_NO_THROW(validate_pattern(p, "<zigzag>"));
+    ASSERT_EQ(p.faces.size(), static_cast<std::size_t>(spec.panels * spec.segments_per_panel));
+    const Model a = build_zigzag_model(spec), b = build_zigzag_pattern_model(spec);
+    const double L = spec.length;
+    // The generator's bending joints sit at its cells' centres: the pattern path's cells.
+    const std::vector<double> joints = joint_positions(a, false);
+    std::vector<double> centres;
+    for (const BodyDef& body : b.bodies) centres.push_back(body.centroid_M->x());
+    std::sort(centres.begin(), centres.end());
+    ASSERT_EQ(joints.size(), centres.size());
+    for (std::size_t k = 0; k < joints.size(); ++k) EXPECT_NEAR(centres[k], joints[k], 1e-15 * L);
+    // Creases in the same places, at the same initial fold angles, with the same laws.
+    const std::vector<double> ca = joint_positions(a, true), cb = joint_positions(b, true);
+    ASSERT_EQ(ca.size(), cb.size());
+    for (std::size_t k = 0; k < ca.size(); ++k) EXPECT_NEAR(cb[k], ca[k], 1e-15 * L);
+    ASSERT_EQ(a.creases.size(), b.creases.size());
+    for (std::size_t c = 0; c < a.creases.size(); ++c) {
+      EXPECT_NEAR(b.creases[c].initial_fold_angle, a.creases[c].initial_fold_angle, 1e-12);
+      for (double phi : {-2.5, -1.0, 0.0, 0.7, 2.9}) {
+        EXPECT_NEAR(b.creases[c].law->evaluate(phi, {}, 0).moment,
+                    a.creases[c].law->evaluate(phi, {}, 0).moment, 1e-18);
+      }
+    }
+    // Mass, the clamped part, every material point's initial place.
+    EXPECT_NEAR(total_mass(b, false), total_mass(a, false), 1e-15 * total_mass(a, false));
+    EXPECT_NEAR(total_mass(b, true), total_mass(a, true), 1e-15 * total_mass(a, false));
+    for (int i = 0; i <= 96; ++i) {
+      for (double y : {0.0, 0.5 * spec.width, spec.width}) {
+        const double s = L * i / 96.0;
+        const MaterialPoint pa = locate_material_point(a, s, y);
+        const MaterialPoint pb = locate_material_point(b, s, y);
+        const Vec3 xa = a.bodies[pa.body].p0_W + a.bodies[pa.body].R0_WB * pa.r_B;
+        const Vec3 xb = b.bodies[pb.body].p0_W + b.bodies[pb.body].R0_WB * pb.r_B;
+        EXPECT_LT((xa - xb).norm(), 1e-15 * L) << "s = " << s << " m, y = " << y << " m";
+        EXPECT_EQ(b.bodies[pb.body].panel, a.bodies[pa.body].panel) << "s = " << s << " m";
+      }
+    }
+    // The rig: gauge, gravity, contact groups.
+    ASSERT_EQ(b.drives.size(), 1u);
+    const DriveDef &da = a.drives[0], &db = b.drives[0];
+    EXPECT_LT((db.start_W - da.start_W).norm(), 1e-15 * L);
+    EXPECT_EQ(db.direction_W, da.direction_W);
+    EXPECT_EQ(db.stiffness, da.stiffness);
+    EXPECT_EQ(db.step, da.step);
+    EXPECT_EQ(db.travel, da.travel);
+    EXPECT_EQ(db.deployed_at, da.deployed_at);
+    EXPECT_EQ(b.gravity_W, a.gravity_W);
+    EXPECT_EQ(b.contact.groups, a.contact.groups);
+    EXPECT_EQ(b.contact.stiffness, a.contact.stiffness);
+  }
+}
+
+TEST(ZigzagFoldPath, RigidPanelLimitMatchesClosedForm) {
+  test::expect_rigid_panel_linkage(build_zigzag_pattern_model);
+}
+
+// Gauge force at every equilibrium of a pull without contact.
+std::vector<double> pull_curve(const Model& m) {
+  const PullResult r = run_pull_test(m, {1, 4}, kDefaultBendThreshold);
+  EXPECT_EQ(r.stats.status, "ok") << r.stats.message;
+  std::vector<double> f;
+  for (const PullSample& s : r.samples) f.push_back(s.force);
+  return f;
+}
+
+// With bending panels the two are discretisations of one beam and its creases. The generator
+// puts half cells at the creases (the midpoint rule: second order), the pattern path rigid
+// whole cells (first order), so their Richardson extrapolations from 16 and 32 segments per
+// panel, (4 F_32 - F_16) / 3 and 2 F_32 - F_16, must agree over the whole curve, and the
+// pattern path's excess must halve from 16 to 32. Without contact (the panels pass through
+// each other), so that the curves are smooth in the discretisation; plain and taped paper
+// (the taped rigidity reaches the pattern path as a plate rigidity EI / (w (1 - nu^2))).
+// Measured: the extrapolations agree within 0.40 % / 0.48 % of the largest force (conditions
+// 1 / 4), and within 0.06 % / 0.12 % from 32 and 64 segments; the excess at the largest force
+// falls 1.88 / 1.79 times from 16 to 32 and 1.95 / 1.90 times from 32 to 64.
+TEST(ZigzagFoldPath, BendingConvergesToTheGeneratorsLimit) {
+  for (int n : {1, 4}) {
+    SCOPED_TRACE(paper_condition_label(n));
+    std::vector<double> strip[2], pattern[2];
+    for (int level = 0; level < 2; ++level) {
+      ZigzagSpec spec = paper_condition(n);
+      spec.contact = false;
+      spec.segments_per_panel = 16 << level;
+      spec.crease_refinement = 8;
+      strip[level] = pull_curve(build_zigzag_model(spec));
+      pattern[level] = pull_curve(build_zigzag_pattern_model(spec));
+    }
+    const std::size_t samples = strip[1].size();
+    ASSERT_GT(samples, 70u);
+    for (const auto* c : {&strip[0], &pattern[0], &pattern[1]}) ASSERT_EQ(c->size(), samples);
+    const double largest = *std::max_element(strip[1].begin(), strip[1].end());
+    for (std::size_t i = 0; i < samples; ++i) {
+      const double strip_limit = (4 * strip[1][i] - strip[0][i]) / 3;
+      const double pattern_limit = 2 * pattern[1][i] - pattern[0][i];
+      EXPECT_NEAR(pattern_limit, strip_limit, 0.01 * largest) << "equilibrium " << i;
+    }
+    const std::size_t end = samples - 1;  // the largest force, pulled nearly taut
+    const double excess_ratio =
+        (pattern[0][end] - strip[0][end]) / (pattern[1][end] - strip[1][end]);
+    EXPECT_GT(excess_ratio, 1.6);
+    EXPECT_LT(excess_ratio, 2.4);
+  }
+}
+
+// The pattern path's strip deploys with contact as the generator's does (condition 2: the
+// panels touch, stay apart by most of the thickness, the deployment peak in the first quarter
+// of the deployed travel).
+TEST(ZigzagFoldPath, DeploysWithContact) {
+  const ZigzagSpec spec = paper_condition(2);
+  const Model m = build_zigzag_pattern_model(spec);
+  const PullResult r = run_pull_test(m, {1, 4}, kDefaultBendThreshold);
+  ASSERT_EQ(r.stats.status, "ok") << r.stats.message;
+  EXPECT_TRUE(r.all_finite);
+  EXPECT_NEAR(r.samples.back().displacement, m.drives[0].travel, 1e-12);
+  EXPECT_GT(r.max_penetration, 0);
+  EXPECT_LT(r.max_penetration, 0.25 * spec.thickness);
+  ASSERT_TRUE(r.deployment_peak.found);
+  EXPECT_GT(r.deployment_peak.x, r.phases.contact);
+  EXPECT_LT(r.deployment_peak.x, 0.25 * m.drives[0].deployed_at);
+}
+
+}  // namespace
+}  // namespace finseg
