@@ -1,12 +1,17 @@
 // Table of the paper's pull test: each Table 1 condition at several discretisations.
 // Plain main (not Google Benchmark): condition, segments/panel, equilibria, Newton
 // iterations, wall time, peak force. BENCHMARKS.md, "Folded strip", records its output.
+// Arguments: [condition [segments [crease_refinement [contact [path]]]]], path `strip` (the
+// generator, default) or `pattern` (the strip's FOLD pattern through the pattern path,
+// docs/zigzag.md).
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "generators/zigzag_conditions.hpp"
+#include "patterns/zigzag_pattern.hpp"
 #include "probes/pull_test.hpp"
 
 int main(int argc, char** argv) {
@@ -26,7 +31,8 @@ int main(int argc, char** argv) {
       spec.segments_per_panel = n;
       if (argc > 3) spec.crease_refinement = std::atof(argv[3]);
       if (argc > 4) spec.contact = std::atoi(argv[4]) != 0;
-      const Model m = build_zigzag_model(spec);
+      const bool pattern = argc > 5 && std::string(argv[5]) == "pattern";
+      const Model m = pattern ? build_zigzag_pattern_model(spec) : build_zigzag_model(spec);
       const PullResult r = run_pull_test(m, {1, 4}, kDefaultBendThreshold);
       fmt::print(
           "{:>9} {:>14} {:>8} {:>10} {:>9} {:>8} {:>11.3f} {:>13.4f} {:>10.1f} {:>11.4f} {:>10.1f} "
