@@ -14,6 +14,7 @@
 #include "core/text.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/scaled.hpp"
+#include "elements/crease_laws/series.hpp"
 #include "elements/crease_laws/shifted.hpp"
 #include "generators/plate_cell_fit.hpp"
 #include "patterns/pattern_checks.hpp"
@@ -143,7 +144,7 @@ SideInCell side_in_cell(const Vec2& a, const Vec2& b) {
 // neighbour is unrolled next to the cell: its centroid's offset from the side, in the side's
 // frame, is carried over to the cell's copy of the side.
 void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, const ElementDef& e,
-                    int element, const Model& m,
+                    int element, const Model& m, bool crease_bends,
                     std::vector<std::vector<CellSideGeometry>>& cell_sides) {
   for (const int side : {0, 1}) {
     const int c = side == 0 ? l.left : l.right, o = side == 0 ? l.right : l.left;
@@ -153,6 +154,7 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
     g.side = {element, side == 0 ? e.R_outer_F : e.R_inner_E, side == 0 ? 1.0 : -1.0};
     g.weight = e.K[3];  // twist; bending K[4] is the same on plate joints
     g.crease = e.crease >= 0;
+    g.crease_bends = g.crease && crease_bends;
     g.across_M = mine.across;
     if (m.bodies[o].fixed) {
       g.d_M = mine.across.dot(mine.P - c_M) * mine.across;
@@ -268,7 +270,13 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
         }
       }
     }
-    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, cell_sides);
+    if (e.crease >= 0 && spec.crease_bending_in_series) {
+      // The plate joint's bending spring (unused by the crease element) in series with the law.
+      CreaseDef& c = m.creases[e.crease];
+      c.law = std::make_shared<SeriesCreaseLaw>(c.law, e.K[4]);
+    }
+    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m,
+                   spec.crease_bending_in_series, cell_sides);
     m.elements.push_back(e);
   }
   const double D =

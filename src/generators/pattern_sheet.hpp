@@ -32,6 +32,12 @@ struct PatternSheetSpec {
   /// True: each crease's law is shifted so that it rests at the crease's own fold angle in
   /// the pattern (edges_foldAngle, else the folded coordinates); false: the law's own rest.
   bool laws_rest_at_pattern = false;
+  /// True: each crease side carries its law in series with the plate's bending spring across
+  /// the side (`D l / h`, as a plate joint's), and the cells next to it count that side's
+  /// bending in their correction: the crease cells' bending next to the fold, which rigid
+  /// cells miss, converges at second order (docs/stiffness.md, "Creases on cell sides").
+  /// False: the law alone (first order at creases).
+  bool crease_bending_in_series = false;
   std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
   bool start_folded = true;      ///< start from the pattern's folded coordinates if any
   double damping_time = 0;       ///< stiffness-proportional damping C = damping_time K, s

@@ -26,6 +26,10 @@ PlateCellDef plate_cell_correction(int body, double area,
   std::vector<Eigen::Matrix<double, 3, 2>> Wk;  // sum_k w_k B_k^T Theta_k
   for (const CellSideGeometry& side : sides) {
     const Mat23 B = rotation_of_curvature(side.d_M);
+    if (side.crease && side.crease_bends) {
+      M += side.share * side.weight * B.transpose() * B;
+      continue;
+    }
     if (side.crease) {
       const Eigen::RowVector3d b = side.across_M.transpose() * B;  // twist about the normal
       M += side.share * side.weight * b.transpose() * b;

@@ -18,6 +18,10 @@ struct CellSideGeometry {
   /// A crease side: its fold is the crease law's, so it is no measurement of the curvature;
   /// only its twist spring (about `across_M`, the side's normal) counts in the joints' energy.
   bool crease = false;
+  /// A crease whose law sits in series with the plate's bending spring across the side
+  /// (PatternSheetSpec::crease_bending_in_series): the side stores that bending as a plate
+  /// joint does, so it counts whole in the joints' energy (still not in the fit).
+  bool crease_bends = false;
   Vec2 across_M = Vec2::Zero();
 };
 

@@ -130,6 +130,7 @@ PatternSheetSpec zigzag_pattern_sheet(const ZigzagSpec& spec) {
   s.subdivisions = 1;
   s.crease_law_length = spec.width;
   s.laws_rest_at_pattern = false;  // the strip's laws rest where the generator puts them
+  s.crease_bending_in_series = true;
   for (std::size_t k = 0; k < sheet.folds.size(); ++k) {
     const FoldSpec& f = sheet.folds[k];
     auto& law = f.angle > 0 ? s.mountain_law : s.valley_law;
@@ -150,9 +151,11 @@ PatternSheetSpec zigzag_pattern_sheet(const ZigzagSpec& spec) {
   return s;
 }
 
-Model build_zigzag_pattern_model(const ZigzagSpec& spec) {
+Model build_zigzag_pattern_model(const ZigzagSpec& spec, bool crease_bending_in_series) {
   const CreasePattern p = zigzag_crease_pattern(spec, true);
-  Model m = build_pattern_model(p, zigzag_pattern_sheet(spec));
+  PatternSheetSpec sheet = zigzag_pattern_sheet(spec);
+  sheet.crease_bending_in_series = crease_bending_in_series;
+  Model m = build_pattern_model(p, sheet);
   // Faces are the cells; the contact groups and the panels' bending watch whole panels.
   for (BodyDef& b : m.bodies) b.panel = panel_of_face(p, b.panel, spec);
   add_zigzag_rig(m, spec);

@@ -25,7 +25,8 @@ PatternSheetSpec zigzag_pattern_sheet(const ZigzagSpec& spec);
 /// The strip of `spec` built through the pattern path (cells of the generator's layout, plate
 /// joints on their shared sides, crease laws on the creases, plate-cell corrections) with the
 /// rig of build_zigzag_model (add_zigzag_rig): docs/zigzag.md, "The strip through the
-/// pattern path".
-Model build_zigzag_pattern_model(const ZigzagSpec& spec);
+/// pattern path". `crease_bending_in_series`: PatternSheetSpec's (false: the law alone, first
+/// order at the creases; kept for comparison).
+Model build_zigzag_pattern_model(const ZigzagSpec& spec, bool crease_bending_in_series = true);
 
 }  // namespace finseg
