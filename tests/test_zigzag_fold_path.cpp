@@ -1,9 +1,9 @@
 // The paper's strip built two ways: `gen zigzag`'s generator and the strip's FOLD pattern
 // through the pattern path (docs/zigzag.md, "The strip through the pattern path"). The same
 // strip to round-off (cells, mass, crease laws, clamps, gauge); the same rigid-panel linkage;
-// with bending panels two discretisations of one beam that converge to one limit, the
-// generator's at second order, the pattern path's at first (docs/stiffness.md, "Creases
-// on cell sides: first order").
+// with bending panels two discretisations of one beam that converge to one limit, both at
+// second order with the crease cells' bending in series with the crease law, the pattern path
+// at first order without it (docs/stiffness.md, "Creases on cell sides").
 #include <gtest/gtest.h>
 
 #include <algorithm>
