@@ -1,6 +1,8 @@
 #include "generators/plate_cell_fit.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 
 namespace finseg {
 namespace {
@@ -61,8 +63,18 @@ PlateCellDef plate_cell_correction(int body, double area,
   }
   Mat3 S_eff = S;
   if (N.cols() > 0) {
+    // Pseudo-inverse: where the joints already store all of Kirchhoff's energy in a component
+    // no side sees (N^T S N = 0 there, e.g. crease sides counted whole), nothing is condensed.
     const Eigen::MatrixXd SN = S * N;
-    S_eff -= SN * (N.transpose() * SN).inverse() * SN.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> en(N.transpose() * SN);
+    const double s_tol = 1e-10 * std::max(S.cwiseAbs().maxCoeff(), 1e-300);
+    Eigen::MatrixXd inv = Eigen::MatrixXd::Zero(N.cols(), N.cols());
+    for (int i = 0; i < N.cols(); ++i) {
+      const double l = en.eigenvalues()[i];
+      if (std::abs(l) > s_tol)
+        inv += en.eigenvectors().col(i) * en.eigenvectors().col(i).transpose() / l;
+    }
+    S_eff -= SN * inv * SN.transpose();
   }
   const Eigen::MatrixXd P = G_pinv * W;
   cell.Q = P.transpose() * S_eff * P;
