@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "elements/crease_law.hpp"
@@ -125,6 +126,37 @@ TEST(ZigzagFoldPath, SeriesLawOfTwoLinearSpringsIsTheSeriesSpring) {
                 1e-15);
   }
   EXPECT_EQ(law.rest_angle({}, 0), rest);
+}
+
+// A stiffening law, M = a sinh(b (phi - r)), in series with a spring k: the moment is the
+// law's at phi - M / k, and moment, stiffness and energy are consistent derivatives.
+class SinhLaw final : public CreaseLaw {
+ public:
+  MomentSample evaluate(double phi, const ElementHistory&, double) const override {
+    return {a * std::sinh(b * (phi - r)), a * b * std::cosh(b * (phi - r))};
+  }
+  double rest_angle(const ElementHistory&, double) const override { return r; }
+  double energy(double phi, const ElementHistory&, double) const override {
+    return a / b * (std::cosh(b * (phi - r)) - 1);
+  }
+  std::string describe() const override { return "sinh"; }
+  double a = 1e-3, b = 3, r = 0.4;
+};
+
+TEST(ZigzagFoldPath, SeriesLawOfANonlinearLawIsConsistent) {
+  const double k = 2e-3, h = 1e-6;
+  const SeriesCreaseLaw law(std::make_shared<SinhLaw>(), k);
+  const SinhLaw alone;
+  for (double phi : {-2.5, -0.3, 0.4, 1.1, 3.0}) {
+    const MomentSample m = law.evaluate(phi, {}, 0);
+    EXPECT_NEAR(alone.evaluate(phi - m.moment / k, {}, 0).moment, m.moment,
+                1e-12 * std::abs(m.moment) + 1e-18);
+    const double dM =
+        (law.evaluate(phi + h, {}, 0).moment - law.evaluate(phi - h, {}, 0).moment) / (2 * h);
+    EXPECT_NEAR(m.stiffness, dM, 1e-6 * std::abs(dM));
+    const double dE = (law.energy(phi + h, {}, 0) - law.energy(phi - h, {}, 0)) / (2 * h);
+    EXPECT_NEAR(m.moment, dE, 1e-6 * std::abs(m.moment) + 1e-12);
+  }
 }
 
 TEST(ZigzagFoldPath, RigidPanelLimitMatchesClosedForm) {

@@ -23,18 +23,23 @@ double SeriesCreaseLaw::law_angle(double phi, const ElementHistory& history, dou
   if (lo > hi) std::swap(lo, hi);
   for (int k = 0; k < 60 && g(lo).first > 0; ++k) lo -= (hi - lo) + 1e-3;
   for (int k = 0; k < 60 && g(hi).first < 0; ++k) hi += (hi - lo) + 1e-3;
-  double x = 0.5 * (lo + hi);
-  for (int it = 0; it < 100; ++it) {
+  // Newton where it shrinks the bracket fast enough, else bisection (rtsafe).
+  double x = 0.5 * (lo + hi), dx_old = hi - lo, dx = dx_old;
+  for (int it = 0; it < 200; ++it) {
     const auto [gx, dg] = g(x);
     if (gx == 0) break;
     (gx > 0 ? hi : lo) = x;
-    double next = dg > 0 ? x - gx / dg : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - x) <= 1e-15 * std::max(1.0, std::abs(x))) {
-      x = next;
-      break;
+    const double newton = x - gx / dg;
+    if (!(newton > lo && newton < hi) || std::abs(2 * gx) > std::abs(dx_old * dg)) {
+      dx_old = dx;
+      dx = 0.5 * (hi - lo);
+      x = lo + dx;
+    } else {
+      dx_old = dx;
+      dx = gx / dg;
+      x = newton;
     }
-    x = next;
+    if (std::abs(dx) <= 1e-15 * std::max(1.0, std::abs(x))) break;
   }
   return x;
 }
