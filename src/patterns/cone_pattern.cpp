@@ -42,8 +42,9 @@ int cone_face(const ConeSpec& s, int band, int wedge) {
 }
 
 int cone_hub_face(const ConeSpec& s, bool top) {
+  if (!(top ? s.top_disc : s.base_disc)) return -1;
   const int W = 2 * s.pleats + 1;
-  return cone_face(s, s.axial_folds + 1, 0) + (top ? 0 : W + 1);
+  return cone_face(s, s.axial_folds + 1, 0) + (top || !s.top_disc ? 0 : W + 1);
 }
 
 CreasePattern cone_crease_pattern(const ConeSpec& s) {
@@ -137,8 +138,10 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
     return d;
   };
   const double away = 1.2 * rho_base + 2 * s.base_radius;
-  const Disc cap = add_disc(0, Vec2(-away, 0), false);
-  const Disc base = add_disc(B, Vec2(-away, 2.5 * s.base_radius), true);
+  std::vector<std::tuple<Disc, int, int>> discs;  // disc, its wall ring, the band beside it
+  if (s.top_disc) discs.emplace_back(add_disc(0, Vec2(-away, 0), false), 0, 0);
+  if (s.base_disc)
+    discs.emplace_back(add_disc(B, Vec2(-away, 2.5 * s.base_radius), true), B, B - 1);
 
   p.edges = edges_from_faces(p.faces);
   std::map<std::pair<int, int>, int> edge_of;
@@ -181,7 +184,7 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
       set(p.edges[edge(vid(r, l), vid(r, l + 1))], sgn, s.axial_fold_angle);
     }
   }
-  for (const auto& [d, ring, band] : {std::tuple{cap, 0, 0}, std::tuple{base, B, B - 1}}) {
+  for (const auto& [d, ring, band] : discs) {
     for (int l = 0; l < W; ++l) {  // the disc's rim to the wall's ring
       p.seams.push_back(
           {edge(vid(ring, l), vid(ring, l + 1)), edge(d.ring0 + l, d.ring0 + (l + 1) % W)});
