@@ -1,7 +1,10 @@
 // The folded cone's crease pattern (docs/fold.md, "Generated patterns"): the development of
 // a truncated pyramid of 2 x pleats sides (the faceted cone), with radial creases on its
-// generators (the pleats) and axial creases on zigzag rings between them (the axial folds):
-// a Miura sheet wrapped on the cone, mountains and valleys as the Miura's. Closed by a seam
+// generators (the pleats) and axial creases on zigzag rings between them (the axial folds),
+// every ring vertex flat-foldable; mountains and valleys those of the fan fold (each
+// generator one kind, alternating generator by generator; rings alternating facet by facet
+// and ring by ring: the wall's flat-folded state is its facets stacked as a fan and
+// Z-folded along the rings, docs/folding.md). Closed by a seam
 // in the middle of a facet and, where asked, at either end by a disc (a rigid hub and a
 // pleated band) seamed to the end ring: with both discs a closed surface. The folded
 // coordinates are the deployed cone; the fold angles are the stowed targets (folding by
