@@ -198,10 +198,10 @@ void register_cone(CLI::App* gen) {
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-    // Clamped: the base hub, else the base band's first whole facet half (wedge 1). Pulled:
-    // the top hub, else the top band's wedge 1.
+    // Clamped: the base hub, else the base band's wedge 1 (the first whole facet). Pulled:
+    // the top hub, else the top band's facet across the axis from that (wedge pleats + 1).
     const int clamped = s->base_disc ? cone_hub_face(*s, false) : cone_face(*s, s->axial_folds, 1);
-    const int pulled = s->top_disc ? cone_hub_face(*s, true) : cone_face(*s, 0, 1);
+    const int pulled = s->top_disc ? cone_hub_face(*s, true) : cone_face(*s, 0, s->pleats + 1);
     const Vec2 top = face_centroid(p, pulled);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
