@@ -1,8 +1,9 @@
 // The generated cone (src/patterns/cone_pattern.*) against the faceted cone's closed form:
 // the development is an isometry of the truncated pyramid through the base and top polygons'
 // corners, the seam closes, every interior ring vertex is flat-foldable (Kawasaki: alternate
-// sector angles sum to pi; Maekawa: mountains and valleys differ by 2), and the open-end
-// options leave the discs out.
+// sector angles sum to pi; Maekawa: mountains and valleys differ by 2), the open-end
+// options leave the discs out, and the fan stack (every generator at 180 degrees, the rings
+// Z-folded) is an isometry with the rings folded by the asked angle of their kinds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +11,9 @@
 #include <map>
 #include <vector>
 
+#include "core/error.hpp"
 #include "patterns/cone_pattern.hpp"
+#include "patterns/pattern_checks.hpp"
 
 namespace finseg {
 namespace {
@@ -115,6 +118,61 @@ TEST(ConePattern, OpenEndsLeaveTheirDiscsOut) {
   EXPECT_EQ(cone_crease_pattern(s).faces.size(), static_cast<std::size_t>(wall + 2 * disc));
   EXPECT_EQ(cone_hub_face(s, true), wall);
   EXPECT_EQ(cone_hub_face(s, false), wall + disc);
+}
+
+TEST(ConePattern, FanStackIsTheFlatFoldedWallAndItsRingsZFold) {
+  const ConeSpec s = open_cone();
+  CreasePattern p = cone_crease_pattern(s);
+  const int G = 2 * s.pleats;
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const double slant = std::hypot(s.base_radius, z_apex);
+  const double beta = 2 * std::asin(s.base_radius * std::sin(kPi / G) / slant);
+  auto planar_isometry_closed = [&](const std::vector<Vec3>& x) {
+    for (const PatternEdge& e : p.edges) {
+      const auto [a, b] = e.vertices;
+      EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(), (x[a] - x[b]).norm(),
+                  1e-12);
+    }
+    for (const auto& f : p.faces) {  // quads: the fourth corner in the first three's plane
+      const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
+      EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
+    }
+    for (const auto& [e0, e1] : p.seams) {
+      EXPECT_NEAR((x[p.edges[e0].vertices[0]] - x[p.edges[e1].vertices[1]]).norm(), 0, 1e-12);
+      EXPECT_NEAR((x[p.edges[e0].vertices[1]] - x[p.edges[e1].vertices[0]]).norm(), 0, 1e-12);
+    }
+  };
+  // Rings flat: one facet's place, every vertex at its flat distance from the apex.
+  const std::vector<Vec3> flat = cone_fan_stack(s, p, 0);
+  planar_isometry_closed(flat);
+  for (std::size_t v = 0; v < flat.size(); ++v) {
+    EXPECT_NEAR(flat[v].z(), 0, 1e-15);
+    EXPECT_NEAR(flat[v].norm(), p.vertices_flat_m[v].norm(), 1e-12);
+    EXPECT_LE(std::abs(std::atan2(flat[v].y(), flat[v].x())), 0.5 * beta + 1e-12);
+  }
+  // Rings at 90 degrees: each ring crease folded by 90 degrees of its own kind, each
+  // generator by 180 degrees.
+  p.vertices_folded_m = cone_fan_stack(s, p, 0.5 * kPi);
+  planar_isometry_closed(p.vertices_folded_m);
+  int rings = 0;
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    const PatternEdge& edge = p.edges[e];
+    if (edge.face_count() != 2) continue;
+    const double measured = measured_fold_angle(p, static_cast<int>(e));
+    if (std::abs(std::abs(edge.fold_angle) - s.axial_fold_angle) < 1e-12) {
+      ++rings;
+      EXPECT_NEAR(measured, std::copysign(0.5 * kPi, edge.fold_angle), 1e-9) << "edge " << e;
+    } else {
+      EXPECT_NEAR(std::abs(measured), kPi, 1e-6) << "edge " << e;
+    }
+  }
+  EXPECT_EQ(rings, s.axial_folds * (G + 1));
+  // Rings at 180 degrees: flat folded again.
+  for (const Vec3& x : cone_fan_stack(s, p, kPi)) EXPECT_NEAR(x.z(), 0, 1e-12);
+  // Only for the open wall.
+  ConeSpec closed = s;
+  closed.base_disc = true;
+  EXPECT_THROW(cone_fan_stack(closed, cone_crease_pattern(closed), 0), InputError);
 }
 
 }  // namespace

@@ -194,4 +194,45 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   return p;
 }
 
+std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, double ring_angle) {
+  validate(s);
+  if (s.top_disc || s.base_disc) {
+    throw InputError("<api>", s.top_disc ? "top_disc" : "base_disc",
+                     "the fan stack is the open wall's: both ends must be open");
+  }
+  if (!(ring_angle >= 0 && ring_angle <= kPi)) {
+    throw InputError("<api>", "ring_angle",
+                     fmt::format("{} deg; allowed range [0, 180] deg", ring_angle / kDegToRad));
+  }
+  const int G = 2 * s.pleats, W = G + 1, B = s.axial_folds + 1;
+  // Generator k lies at flat angle (k + 1/2) beta; beta from the first two generators.
+  auto flat_angle = [&](int v) {
+    const Vec2 u = p.vertices_flat_m[v];
+    return std::atan2(u.y(), u.x());
+  };
+  const double beta = flat_angle(2) - flat_angle(1);
+  // Every generator folded by 180 degrees maps the development onto the facet
+  // [-beta / 2, beta / 2]: a triangle wave of the flat angle (period 2 beta).
+  auto stacked = [&](const Vec2& u) {
+    const double a = std::fmod(std::atan2(u.y(), u.x()) + 0.5 * beta, 2 * beta);
+    const double t = (a > beta ? 2 * beta - a : a) - 0.5 * beta;
+    return Vec3(u.norm() * std::cos(t), u.norm() * std::sin(t), 0);
+  };
+  std::vector<Vec3> x(p.vertices_flat_m.size());
+  for (std::size_t v = 0; v < x.size(); ++v) x[v] = stacked(p.vertices_flat_m[v]);
+  // Ring r's chord in the stack: its vertices on generators 0 and 1 (lines 1 and 2).
+  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
+  for (int r = B - 1; r >= 1; --r) {  // fold the distal part, innermost ring last
+    const Vec3 a = x[vid(r, 1)], e = (x[vid(r, 2)] - a).normalized();
+    // Ring r in wedge 1 is of kind (-1)^(r + 1) (valley positive); wedge 1 lies mirrored
+    // in the stack, so its valley is a negative turn about the chord.
+    const double angle = (r % 2 == 0 ? 1.0 : -1.0) * ring_angle;
+    const Eigen::AngleAxisd turn(angle, e);
+    for (int q = r + 1; q <= B; ++q) {
+      for (int l = 0; l <= W; ++l) x[vid(q, l)] = a + turn * (x[vid(q, l)] - a);
+    }
+  }
+  return x;
+}
+
 }  // namespace finseg

@@ -41,4 +41,12 @@ int cone_hub_face(const ConeSpec& s, bool top);
 /// The pattern. Throws InputError("<api>", field, ...) for a spec out of range.
 CreasePattern cone_crease_pattern(const ConeSpec& s);
 
+/// The wall's flat-folded state (docs/folding.md, "The cone"): every generator at 180 degrees
+/// (the facets stacked as a fan about the apex, at the origin, in the x-y plane), then ring r
+/// (1 .. axial_folds) folded by `ring_angle` (rad, [0, pi]) of its kind, a Z-fold of the stack
+/// about the ring chords, the top band kept in place. Vertices as in `p`, which must be
+/// `cone_crease_pattern(s)` with both ends open (throws InputError("<api>", "top_disc" or
+/// "base_disc", ...) otherwise). Exact for sheets of no thickness: the layers coincide.
+std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, double ring_angle);
+
 }  // namespace finseg
