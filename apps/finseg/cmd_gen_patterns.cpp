@@ -160,6 +160,7 @@ void register_cone(CLI::App* gen) {
   auto fraction = std::make_shared<double>(0.9);
   auto ends = std::make_shared<std::pair<std::string, std::string>>("disc", "disc");
   auto fold_steps = std::make_shared<int>(0);
+  auto stowed = std::make_shared<double>(-1);
   CLI::App* c = gen->add_subcommand(
       "cone", "conical skin with radial pleats and axial zigzag folds, top pulled along the axis");
   c->add_option("--base-radius", s->base_radius, "m")->capture_default_str();
@@ -182,8 +183,12 @@ void register_cone(CLI::App* gen) {
   c->add_option("--fold-steps", *fold_steps,
                 "folding by the static solver in this many load steps (0: implicit, dynamic)")
       ->capture_default_str();
+  CLI::Option* stowed_option =
+      c->add_option("--stowed", *stowed,
+                    "start from the fan stack Z-folded by this ring angle, deg [0, 180] (open "
+                    "ends only); the base band pulled away from the top band");
   add_sheet_options(c, *o);
-  c->callback([o, s, angles, fraction, ends, fold_steps] {
+  c->callback([o, s, angles, fraction, ends, fold_steps, stowed, stowed_option] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
@@ -195,13 +200,28 @@ void register_cone(CLI::App* gen) {
     s->base_disc = disc_end(ends->second, "--base");
     s->pleat_fold_angle = angles->first * kDegToRad;
     s->axial_fold_angle = angles->second * kDegToRad;
+    const bool from_stack = stowed_option->count() > 0;
+    if (from_stack && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", "--stowed", "needs --top open --base open");
+    }
+    if (from_stack && !(*stowed >= 0 && *stowed <= 180)) {
+      throw InputError("<cli>", "--stowed", fmt::format("{} deg; allowed [0, 180]", *stowed));
+    }
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
+    if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
     // Clamped: the base hub, else the base band's wedge 1 (the first whole facet). Pulled:
     // the top hub, else the top band's facet across the axis from that (wedge pleats + 1).
-    const int clamped = s->base_disc ? cone_hub_face(*s, false) : cone_face(*s, s->axial_folds, 1);
-    const int pulled = s->top_disc ? cone_hub_face(*s, true) : cone_face(*s, 0, s->pleats + 1);
+    // From the fan stack: the top band's wedge 1 clamped, the base band's pulled away from
+    // the apex along the stack's middle (+x).
+    const int clamped = from_stack     ? cone_face(*s, 0, 1)
+                        : s->base_disc ? cone_hub_face(*s, false)
+                                       : cone_face(*s, s->axial_folds, 1);
+    const int pulled = from_stack    ? cone_face(*s, s->axial_folds, 1)
+                       : s->top_disc ? cone_hub_face(*s, true)
+                                     : cone_face(*s, 0, s->pleats + 1);
+    const char* direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
     const Vec2 top = face_centroid(p, pulled);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
@@ -225,7 +245,7 @@ void register_cone(CLI::App* gen) {
         "  duration: 1.0\n"
         "  solver: {}\n"
         "drives:\n"
-        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: 20,\n"
+        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: 20,\n"
         "     travel: {:.6g}, step: {:.6g}, speed: {:.6g}}}\n"
         "probes:\n"
         "  - {{name: top, type: drive, drive: top}}\n"
@@ -235,8 +255,11 @@ void register_cone(CLI::App* gen) {
         "outputs: {{vtk: true, html: true, plot: true}}\n",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
         ends->second, scene_name, scene_name, sheet_sections(*o, fold_file), clamped + 1,
-        s->base_disc ? "the base disc's hub" : "one face of the base band", *fraction,
-        folding_solver, top.x(), top.y(), 0.8 * s->height, 0.8 * s->height / 100, 0.8 * s->height);
+        from_stack     ? "one face of the top band"
+        : s->base_disc ? "the base disc's hub"
+                       : "one face of the base band",
+        *fraction, folding_solver, top.x(), top.y(), direction, 0.8 * s->height,
+        0.8 * s->height / 100, 0.8 * s->height);
     write_pair(*o, p, yaml);
   });
 }
