@@ -229,13 +229,23 @@ void register_cone(CLI::App* gen) {
         *fold_steps > 0
             ? fmt::format("{{type: static, load_steps: {}, max_iterations: 50}}", *fold_steps)
             : std::string("{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}");
+    const std::string how_to_run =
+        from_stack
+            ? fmt::format(
+                  "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding.\n"
+                  "# Pull it (contact off, docs/folding.md): finseg run {} --set "
+                  "contact.enabled=false --out deploy\n",
+                  *stowed, scene_name)
+            : fmt::format(
+                  "# Fold it (contact on): finseg run {0} --fold --out folded\n"
+                  "# Deploy it by pulling the top: finseg run {0} --state "
+                  "folded/checkpoint.json --out deploy\n",
+                  scene_name);
     const std::string yaml = fmt::format(
         "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
         "axial folds,\n"
         "# top {}, base {}.\n"
-        "# Fold it (contact on): finseg run {} --fold --out folded\n"
-        "# Deploy it by pulling the top: finseg run {} --state folded/checkpoint.json --out "
-        "deploy\n"
+        "{}"
         "title: folded cone pulled open by its top\n{}"
         "fixtures: {{panels: [{}]}}   # {}\n"
         "contact: {{stiffness: 1.0e5, exponent: 1.5,\n"
@@ -254,7 +264,7 @@ void register_cone(CLI::App* gen) {
         "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01}}\n"
         "outputs: {{vtk: true, html: true, plot: true}}\n",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
-        ends->second, scene_name, scene_name, sheet_sections(*o, fold_file), clamped + 1,
+        ends->second, how_to_run, sheet_sections(*o, fold_file), clamped + 1,
         from_stack     ? "one face of the top band"
         : s->base_disc ? "the base disc's hub"
                        : "one face of the base band",
