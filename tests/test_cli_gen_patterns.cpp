@@ -76,6 +76,34 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   r = run_finseg(dir, "inspect c.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 91 (13 fixed)"), std::string::npos) << r.out;
+  // Both ends open: the wall alone, one face of the base band clamped.
+  r = run_finseg(dir,
+                 "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                 "--base open --fold-steps 10 --out o.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "inspect o.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  // From the fan stack (open ends only): the pattern's folded form reads back (planar faces,
+  // the seam closed).
+  r = run_finseg(dir,
+                 "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                 "--base open --stowed 150 --out st.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "inspect st.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  for (const char* bad : {"--stowed 150", "--top open --base open --stowed 181"}) {
+    r = run_finseg(dir, std::string("gen cone ") + bad + " --out l.yaml");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--stowed"), std::string::npos) << r.err;
+  }
+  r = run_finseg(dir, "gen cone --top lid --out l.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--top"), std::string::npos) << r.err;
+  r = run_finseg(dir, "gen cone --fold-steps -1 --out l.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--fold-steps"), std::string::npos) << r.err;
   r = run_finseg(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--top-radius"), std::string::npos) << r.err;

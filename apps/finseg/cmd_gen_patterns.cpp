@@ -145,16 +145,26 @@ void register_miura(CLI::App* gen) {
   });
 }
 
+// "disc" or "open" for --top / --base.
+bool disc_end(const std::string& value, const char* option) {
+  if (value != "disc" && value != "open") {
+    throw InputError("<cli>", option, fmt::format("'{}'; allowed: disc, open", value));
+  }
+  return value == "disc";
+}
+
 void register_cone(CLI::App* gen) {
   auto o = std::make_shared<SheetOptions>();
   auto s = std::make_shared<ConeSpec>();
   auto angles = std::make_shared<std::pair<double, double>>(120.0, 150.0);
   auto fraction = std::make_shared<double>(0.9);
+  auto ends = std::make_shared<std::pair<std::string, std::string>>("disc", "disc");
+  auto fold_steps = std::make_shared<int>(0);
+  auto stowed = std::make_shared<double>(-1);
   CLI::App* c = gen->add_subcommand(
-      "cone", "conical skin with radial pleats and axial zigzag folds, capped, apex pulled");
+      "cone", "conical skin with radial pleats and axial zigzag folds, top pulled along the axis");
   c->add_option("--base-radius", s->base_radius, "m")->capture_default_str();
-  c->add_option("--top-radius", s->top_radius, "m (> 0: a cap plate closes the top)")
-      ->capture_default_str();
+  c->add_option("--top-radius", s->top_radius, "m")->capture_default_str();
   c->add_option("--height", s->height, "m")->capture_default_str();
   c->add_option("--pleats", s->pleats, "radial pleats (2 x pleats generators, M/V alternating)")
       ->capture_default_str();
@@ -166,46 +176,99 @@ void register_cone(CLI::App* gen) {
       ->capture_default_str();
   c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
       ->capture_default_str();
+  c->add_option("--top", ends->first, "top end: disc (hub + pleated band, pulled) or open")
+      ->capture_default_str();
+  c->add_option("--base", ends->second, "base end: disc (its hub clamped) or open")
+      ->capture_default_str();
+  c->add_option("--fold-steps", *fold_steps,
+                "folding by the static solver in this many load steps (0: implicit, dynamic)")
+      ->capture_default_str();
+  CLI::Option* stowed_option =
+      c->add_option("--stowed", *stowed,
+                    "start from the fan stack Z-folded by this ring angle, deg [0, 180] (open "
+                    "ends only); the base band pulled away from the top band");
   add_sheet_options(c, *o);
-  c->callback([o, s, angles, fraction] {
+  c->callback([o, s, angles, fraction, ends, fold_steps, stowed, stowed_option] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
     }
+    if (*fold_steps < 0 || *fold_steps > 100000) {
+      throw InputError("<cli>", "--fold-steps", fmt::format("{}; allowed 0..100000", *fold_steps));
+    }
+    s->top_disc = disc_end(ends->first, "--top");
+    s->base_disc = disc_end(ends->second, "--base");
     s->pleat_fold_angle = angles->first * kDegToRad;
     s->axial_fold_angle = angles->second * kDegToRad;
+    const bool from_stack = stowed_option->count() > 0;
+    if (from_stack && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", "--stowed", "needs --top open --base open");
+    }
+    if (from_stack && !(*stowed >= 0 && *stowed <= 180)) {
+      throw InputError("<cli>", "--stowed", fmt::format("{} deg; allowed [0, 180]", *stowed));
+    }
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-    const int base = cone_hub_face(*s, false) + 1, cap = cone_hub_face(*s, true);
-    const Vec2 top = face_centroid(p, cap);
+    if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
+    // Clamped: the base hub, else the base band's wedge 1 (the first whole facet). Pulled:
+    // the top hub, else the top band's facet across the axis from that (wedge pleats + 1).
+    // From the fan stack: the top band's wedge 1 clamped, the base band's pulled away from
+    // the apex along the stack's middle (+x).
+    const int clamped = from_stack     ? cone_face(*s, 0, 1)
+                        : s->base_disc ? cone_hub_face(*s, false)
+                                       : cone_face(*s, s->axial_folds, 1);
+    const int pulled = from_stack    ? cone_face(*s, s->axial_folds, 1)
+                       : s->top_disc ? cone_hub_face(*s, true)
+                                     : cone_face(*s, 0, s->pleats + 1);
+    const char* direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
+    const Vec2 top = face_centroid(p, pulled);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
+    const std::string folding_solver =
+        *fold_steps > 0
+            ? fmt::format("{{type: static, load_steps: {}, max_iterations: 50}}", *fold_steps)
+            : std::string("{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}");
+    const std::string how_to_run =
+        from_stack
+            ? fmt::format(
+                  "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding.\n"
+                  "# Pull it (contact off, docs/folding.md): finseg run {} --set "
+                  "contact.enabled=false --out deploy\n",
+                  *stowed, scene_name)
+            : fmt::format(
+                  "# Fold it (contact on): finseg run {0} --fold --out folded\n"
+                  "# Deploy it by pulling the top: finseg run {0} --state "
+                  "folded/checkpoint.json --out deploy\n",
+                  scene_name);
     const std::string yaml = fmt::format(
         "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
-        "axial folds.\n"
-        "# Fold it (contact on): finseg run {} --fold --out folded\n"
-        "# Deploy it by pulling the cap: finseg run {} --state folded/checkpoint.json --out "
-        "deploy\n"
-        "title: folded cone pulled open by its top hub\n{}"
-        "fixtures: {{panels: [{}]}}   # the base disc's hub\n"
+        "axial folds,\n"
+        "# top {}, base {}.\n"
+        "{}"
+        "title: folded cone pulled open by its top\n{}"
+        "fixtures: {{panels: [{}]}}   # {}\n"
         "contact: {{stiffness: 1.0e5, exponent: 1.5,\n"
         "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
         "folding:\n"
         "  fraction: {:g}\n"
         "  duration: 1.0\n"
-        "  solver: {{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}}\n"
+        "  solver: {}\n"
         "drives:\n"
-        "  - {{name: cap, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: 20,\n"
+        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: 20,\n"
         "     travel: {:.6g}, step: {:.6g}, speed: {:.6g}}}\n"
         "probes:\n"
-        "  - {{name: cap, type: drive, drive: cap}}\n"
+        "  - {{name: top, type: drive, drive: top}}\n"
         "  - {{name: energy, type: energy}}\n"
         "  - {{name: contact, type: contact}}\n"
         "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01}}\n"
         "outputs: {{vtk: true, html: true, plot: true}}\n",
-        s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, scene_name, scene_name,
-        sheet_sections(*o, fold_file), base, *fraction, top.x(), top.y(), 0.8 * s->height,
+        s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
+        ends->second, how_to_run, sheet_sections(*o, fold_file), clamped + 1,
+        from_stack     ? "one face of the top band"
+        : s->base_disc ? "the base disc's hub"
+                       : "one face of the base band",
+        *fraction, folding_solver, top.x(), top.y(), direction, 0.8 * s->height,
         0.8 * s->height / 100, 0.8 * s->height);
     write_pair(*o, p, yaml);
   });

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
-#include "patterns/miura_pattern.hpp"
 
 namespace finseg {
 namespace {
@@ -42,8 +42,9 @@ int cone_face(const ConeSpec& s, int band, int wedge) {
 }
 
 int cone_hub_face(const ConeSpec& s, bool top) {
+  if (!(top ? s.top_disc : s.base_disc)) return -1;
   const int W = 2 * s.pleats + 1;
-  return cone_face(s, s.axial_folds + 1, 0) + (top ? 0 : W + 1);
+  return cone_face(s, s.axial_folds + 1, 0) + (top || !s.top_disc ? 0 : W + 1);
 }
 
 CreasePattern cone_crease_pattern(const ConeSpec& s) {
@@ -137,8 +138,9 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
     return d;
   };
   const double away = 1.2 * rho_base + 2 * s.base_radius;
-  const Disc cap = add_disc(0, Vec2(-away, 0), false);
-  const Disc base = add_disc(B, Vec2(-away, 2.5 * s.base_radius), true);
+  std::vector<std::pair<Disc, int>> discs;  // a disc and its wall ring
+  if (s.top_disc) discs.emplace_back(add_disc(0, Vec2(-away, 0), false), 0);
+  if (s.base_disc) discs.emplace_back(add_disc(B, Vec2(-away, 2.5 * s.base_radius), true), B);
 
   p.edges = edges_from_faces(p.faces);
   std::map<std::pair<int, int>, int> edge_of;
@@ -147,21 +149,16 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
     edge_of[{std::min(v[0], v[1]), std::max(v[0], v[1])}] = static_cast<int>(e);
   }
   auto edge = [&](int a, int b) { return edge_of.at({std::min(a, b), std::max(a, b)}); };
-  // Mountains and valleys as on a Miura sheet of B rows and G columns (generators its
-  // straight lines, rings its zigzag lines): each ring one kind, alternating ring by ring;
-  // each generator alternating band by band (Maekawa: three of one kind at every vertex).
-  MiuraSpec miura;
-  miura.rows = B;
-  miura.columns = G;
-  const CreasePattern sheet = miura_crease_pattern(miura);
-  std::map<std::pair<int, int>, double> miura_sign;
-  for (const PatternEdge& e : sheet.edges) {
-    const int a = e.vertices[0], b = e.vertices[1];
-    miura_sign[{std::min(a, b), std::max(a, b)}] = e.fold_angle > 0 ? 1.0 : -1.0;
-  }
-  auto sign = [&](int i0, int j0, int i1, int j1) {
-    const int a = i0 * (G + 1) + j0, b = i1 * (G + 1) + j1;
-    return miura_sign.at({std::min(a, b), std::max(a, b)});
+  // Mountains and valleys of the fan fold (docs/folding.md, "Why the cone does not fold"):
+  // generator k all one kind, (-1)^k (valley for even k), so that with every generator at
+  // 180 degrees the wall is a flat fan of its facets stacked on one another; ring r in the
+  // facet left of generator k (wedge k) of kind (-1)^(r + k), alternating facet by facet
+  // (the stacked facets lie alternately mirrored) and ring by ring (a Z-fold of the stack).
+  // Every ring vertex: the generator's two creases one kind, the ring's two opposite
+  // (Maekawa), sector angles psi, pi - psi, pi - psi, psi (Kawasaki).
+  auto generator_sign = [](int k) { return k % 2 == 0 ? 1.0 : -1.0; };
+  auto ring_sign = [&](int r, int wedge) {  // wedge 0 is the far part of wedge G's facet
+    return ((r + (wedge == 0 ? G : wedge)) % 2 == 0) ? 1.0 : -1.0;
   };
   auto set = [&](PatternEdge& e, double sgn, double angle) {
     e.assignment = sgn > 0 ? EdgeAssignment::Valley : EdgeAssignment::Mountain;
@@ -170,25 +167,23 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   p.has_fold_angles = true;
   for (int b = 0; b < B; ++b) {
     for (int k = 0; k < G; ++k) {  // generator k is line k + 1
-      set(p.edges[edge(vid(b, k + 1), vid(b + 1, k + 1))], sign(b, k, b + 1, k),
-          s.pleat_fold_angle);
+      set(p.edges[edge(vid(b, k + 1), vid(b + 1, k + 1))], generator_sign(k), s.pleat_fold_angle);
     }
     p.seams.push_back({edge(vid(b, 0), vid(b + 1, 0)), edge(vid(b, W), vid(b + 1, W))});
   }
   for (int r = 1; r < B; ++r) {
     for (int l = 0; l < W; ++l) {
-      const double sgn = (l == 0 || l == G) ? sign(r, G - 1, r, G) : sign(r, l - 1, r, l);
-      set(p.edges[edge(vid(r, l), vid(r, l + 1))], sgn, s.axial_fold_angle);
+      set(p.edges[edge(vid(r, l), vid(r, l + 1))], ring_sign(r, l), s.axial_fold_angle);
     }
   }
-  for (const auto& [d, ring, band] : {std::tuple{cap, 0, 0}, std::tuple{base, B, B - 1}}) {
+  for (const auto& [d, ring] : discs) {
     for (int l = 0; l < W; ++l) {  // the disc's rim to the wall's ring
       p.seams.push_back(
           {edge(vid(ring, l), vid(ring, l + 1)), edge(d.ring0 + l, d.ring0 + (l + 1) % W)});
     }
     for (int l = 1; l < W; ++l) {  // pleats on the generators' azimuths
       PatternEdge& e = p.edges[edge(d.hub0 + l, d.ring0 + l)];
-      set(e, sign(band, l - 1, band + 1, l - 1), s.pleat_fold_angle);
+      set(e, generator_sign(l - 1), s.pleat_fold_angle);
     }
     p.edges[edge(d.hub0, d.ring0)].assignment = EdgeAssignment::Join;  // mid-facet
     for (int l = 0; l < W; ++l) {  // the hub's sides: hinges (creases resting flat)
@@ -197,6 +192,47 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   }
   derive_edge_faces(p, "<cone>");
   return p;
+}
+
+std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, double ring_angle) {
+  validate(s);
+  if (s.top_disc || s.base_disc) {
+    throw InputError("<api>", s.top_disc ? "top_disc" : "base_disc",
+                     "the fan stack is the open wall's: both ends must be open");
+  }
+  if (!(ring_angle >= 0 && ring_angle <= kPi)) {
+    throw InputError("<api>", "ring_angle",
+                     fmt::format("{} deg; allowed range [0, 180] deg", ring_angle / kDegToRad));
+  }
+  const int G = 2 * s.pleats, W = G + 1, B = s.axial_folds + 1;
+  // Generator k lies at flat angle (k + 1/2) beta; beta from the first two generators.
+  auto flat_angle = [&](int v) {
+    const Vec2 u = p.vertices_flat_m[v];
+    return std::atan2(u.y(), u.x());
+  };
+  const double beta = flat_angle(2) - flat_angle(1);
+  // Every generator folded by 180 degrees maps the development onto the facet
+  // [-beta / 2, beta / 2]: a triangle wave of the flat angle (period 2 beta).
+  auto stacked = [&](const Vec2& u) {
+    const double a = std::fmod(std::atan2(u.y(), u.x()) + 0.5 * beta, 2 * beta);
+    const double t = (a > beta ? 2 * beta - a : a) - 0.5 * beta;
+    return Vec3(u.norm() * std::cos(t), u.norm() * std::sin(t), 0);
+  };
+  std::vector<Vec3> x(p.vertices_flat_m.size());
+  for (std::size_t v = 0; v < x.size(); ++v) x[v] = stacked(p.vertices_flat_m[v]);
+  // Ring r's chord in the stack: its vertices on generators 0 and 1 (lines 1 and 2).
+  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
+  for (int r = B - 1; r >= 1; --r) {  // fold the distal part, innermost ring last
+    const Vec3 a = x[vid(r, 1)], e = (x[vid(r, 2)] - a).normalized();
+    // Ring r in wedge 1 is of kind (-1)^(r + 1) (valley positive); wedge 1 lies mirrored
+    // in the stack, so its valley is a negative turn about the chord.
+    const double angle = (r % 2 == 0 ? 1.0 : -1.0) * ring_angle;
+    const Eigen::AngleAxisd turn(angle, e);
+    for (int q = r + 1; q <= B; ++q) {
+      for (int l = 0; l <= W; ++l) x[vid(q, l)] = a + turn * (x[vid(q, l)] - a);
+    }
+  }
+  return x;
 }
 
 }  // namespace finseg

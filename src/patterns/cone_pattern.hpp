@@ -1,10 +1,14 @@
 // The folded cone's crease pattern (docs/fold.md, "Generated patterns"): the development of
 // a truncated pyramid of 2 x pleats sides (the faceted cone), with radial creases on its
-// generators (the pleats) and axial creases on zigzag rings between them (the axial folds):
-// a Miura sheet wrapped on the cone, mountains and valleys as the Miura's. Closed by a seam
-// in the middle of a facet and closed at both ends by discs (a rigid hub and a pleated band)
-// seamed to the end rings: a closed surface. The folded coordinates are the deployed
-// cone; the fold angles are the stowed targets (folding by simulation, docs/folding.md).
+// generators (the pleats) and axial creases on zigzag rings between them (the axial folds),
+// every ring vertex flat-foldable; mountains and valleys those of the fan fold (each
+// generator one kind, alternating generator by generator; rings alternating facet by facet
+// and ring by ring: the wall's flat-folded state is its facets stacked as a fan and
+// Z-folded along the rings, docs/folding.md). Closed by a seam
+// in the middle of a facet and, where asked, at either end by a disc (a rigid hub and a
+// pleated band) seamed to the end ring: with both discs a closed surface. The folded
+// coordinates are the deployed cone; the fold angles are the stowed targets (folding by
+// simulation, docs/folding.md).
 #pragma once
 
 #include "patterns/crease_pattern.hpp"
@@ -21,17 +25,28 @@ struct ConeSpec {
   double pleat_fold_angle = 120 * kDegToRad;  ///< stowed fold of the generators, (0, pi)
   double axial_fold_angle = 150 * kDegToRad;  ///< stowed fold of the rings, (0, pi)
   double hub_fraction = 0.3;  ///< end discs: rigid hub radius over the ring's, (0, 1)
+  bool top_disc = true;       ///< a disc closes the top ring (else the top is open)
+  bool base_disc = true;      ///< a disc closes the base ring (else the base is open)
 };
 
 /// Faces of the pattern: band b (0 at the top) of wedge w is face b (2 pleats + 1) + w
 /// (wedges 0 and 2 pleats are the half facets at the seam); then the top disc (its hub, then
-/// 2 pleats + 1 trapezoids) and the base disc likewise.
+/// 2 pleats + 1 trapezoids) and the base disc likewise, each only where `top_disc` /
+/// `base_disc` asks for it.
 int cone_face(const ConeSpec& s, int band, int wedge);
 
-/// The hub face of the top disc (top = true) or of the base disc.
+/// The hub face of the top disc (top = true) or of the base disc; -1 for an open end.
 int cone_hub_face(const ConeSpec& s, bool top);
 
 /// The pattern. Throws InputError("<api>", field, ...) for a spec out of range.
 CreasePattern cone_crease_pattern(const ConeSpec& s);
+
+/// The wall's flat-folded state (docs/folding.md, "The cone"): every generator at 180 degrees
+/// (the facets stacked as a fan about the apex, at the origin, in the x-y plane), then ring r
+/// (1 .. axial_folds) folded by `ring_angle` (rad, [0, pi]) of its kind, a Z-fold of the stack
+/// about the ring chords, the top band kept in place. Vertices as in `p`, which must be
+/// `cone_crease_pattern(s)` with both ends open (throws InputError("<api>", "top_disc" or
+/// "base_disc", ...) otherwise). Exact for sheets of no thickness: the layers coincide.
+std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, double ring_angle);
 
 }  // namespace finseg

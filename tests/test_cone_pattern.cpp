@@ -1,0 +1,179 @@
+// The generated cone (src/patterns/cone_pattern.*) against the faceted cone's closed form:
+// the development is an isometry of the truncated pyramid through the base and top polygons'
+// corners, the seam closes, every interior ring vertex is flat-foldable (Kawasaki: alternate
+// sector angles sum to pi; Maekawa: mountains and valleys differ by 2), the open-end
+// options leave the discs out, and the fan stack (every generator at 180 degrees, the rings
+// Z-folded) is an isometry with the rings folded by the asked angle of their kinds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "core/error.hpp"
+#include "patterns/cone_pattern.hpp"
+#include "patterns/pattern_checks.hpp"
+
+namespace finseg {
+namespace {
+
+ConeSpec open_cone() {
+  ConeSpec s;
+  s.pleats = 6;
+  s.axial_folds = 2;
+  s.top_disc = false;
+  s.base_disc = false;
+  return s;
+}
+
+TEST(ConePattern, FoldedFormIsTheFacetedConeAndTheDevelopmentItsIsometry) {
+  const ConeSpec s = open_cone();
+  const CreasePattern p = cone_crease_pattern(s);
+  const int G = 2 * s.pleats;
+  // Corners of the base (z = 0, radius R) and top (z = h, radius r) polygons at azimuths
+  // 2 pi (k + 1/2) / G; the seam (mid-facet) at R cos(pi / G).
+  int base_corners = 0, top_corners = 0;
+  for (const Vec3& x : p.vertices_folded_m) {
+    const double rad = std::hypot(x.x(), x.y());
+    const double a = std::atan2(x.y(), x.x()) * G / (2 * kPi) - 0.5;  // k at a corner
+    const bool corner = std::abs(a - std::round(a)) < 1e-9;
+    if (std::abs(x.z()) < 1e-12 && corner) {
+      EXPECT_NEAR(rad, s.base_radius, 1e-12);
+      ++base_corners;
+    }
+    if (std::abs(x.z() - s.height) < 1e-12 && corner) {
+      EXPECT_NEAR(rad, s.top_radius, 1e-12);
+      ++top_corners;
+    }
+  }
+  EXPECT_EQ(base_corners, G);
+  EXPECT_EQ(top_corners, G);
+  // The development: a sector of G generators beta apart, beta the angle between two adjacent
+  // corners seen from the apex; the base corners at the slant length from the apex (origin).
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const double slant = std::hypot(s.base_radius, z_apex);
+  const double beta = 2 * std::asin(s.base_radius * std::sin(kPi / G) / slant);
+  double widest = 0;
+  for (const Vec2& u : p.vertices_flat_m) {
+    if (std::abs(u.norm() - slant) < 1e-12) widest = std::max(widest, std::atan2(u.y(), u.x()));
+  }
+  EXPECT_NEAR(widest, (G - 0.5) * beta, 1e-12);  // the last generator
+  // Every edge as long folded as flat; faces planar is checked by the FOLD reader.
+  for (const PatternEdge& e : p.edges) {
+    const auto [a, b] = e.vertices;
+    EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(),
+                (p.vertices_folded_m[a] - p.vertices_folded_m[b]).norm(), 1e-12);
+  }
+  // The seam closes: its two edges' ends meet in 3-D (edge u -> v joined to v' -> u').
+  ASSERT_EQ(p.seams.size(), static_cast<std::size_t>(s.axial_folds + 1));
+  for (const auto& [e0, e1] : p.seams) {
+    const auto v0 = p.edges[e0].vertices, v1 = p.edges[e1].vertices;
+    EXPECT_NEAR((p.vertices_folded_m[v0[0]] - p.vertices_folded_m[v1[1]]).norm(), 0, 1e-12);
+    EXPECT_NEAR((p.vertices_folded_m[v0[1]] - p.vertices_folded_m[v1[0]]).norm(), 0, 1e-12);
+  }
+}
+
+TEST(ConePattern, InteriorRingVerticesAreFlatFoldable) {
+  const ConeSpec s = open_cone();
+  const CreasePattern p = cone_crease_pattern(s);
+  std::map<int, std::vector<int>> around;  // vertex -> its edges
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    for (int v : p.edges[e].vertices) around[v].push_back(static_cast<int>(e));
+  }
+  int interior = 0;
+  for (const auto& [v, edges] : around) {
+    const bool inside = std::all_of(edges.begin(), edges.end(),
+                                    [&](int e) { return p.edges[e].face_count() == 2; });
+    if (!inside) continue;
+    ++interior;
+    ASSERT_EQ(edges.size(), 4u) << "vertex " << v;
+    std::vector<double> dir;
+    int mountains = 0, valleys = 0;
+    for (int e : edges) {
+      const auto [a, b] = p.edges[e].vertices;
+      const Vec2 d = p.vertices_flat_m[a == v ? b : a] - p.vertices_flat_m[v];
+      dir.push_back(std::atan2(d.y(), d.x()));
+      mountains += p.edges[e].assignment == EdgeAssignment::Mountain;
+      valleys += p.edges[e].assignment == EdgeAssignment::Valley;
+    }
+    std::sort(dir.begin(), dir.end());
+    const double alternate = (dir[1] - dir[0]) + (dir[3] - dir[2]);  // sectors 1 and 3
+    EXPECT_NEAR(alternate, kPi, 1e-12) << "Kawasaki at vertex " << v;
+    EXPECT_EQ(std::abs(mountains - valleys), 2) << "Maekawa at vertex " << v;
+  }
+  EXPECT_EQ(interior, 2 * s.pleats * s.axial_folds);  // every generator on every inner ring
+}
+
+TEST(ConePattern, OpenEndsLeaveTheirDiscsOut) {
+  ConeSpec s = open_cone();
+  const int wall = (2 * s.pleats + 1) * (s.axial_folds + 1), disc = 2 * s.pleats + 2;
+  EXPECT_EQ(cone_crease_pattern(s).faces.size(), static_cast<std::size_t>(wall));
+  EXPECT_EQ(cone_hub_face(s, true), -1);
+  EXPECT_EQ(cone_hub_face(s, false), -1);
+  s.base_disc = true;
+  EXPECT_EQ(cone_crease_pattern(s).faces.size(), static_cast<std::size_t>(wall + disc));
+  EXPECT_EQ(cone_hub_face(s, false), wall);
+  s.top_disc = true;
+  EXPECT_EQ(cone_crease_pattern(s).faces.size(), static_cast<std::size_t>(wall + 2 * disc));
+  EXPECT_EQ(cone_hub_face(s, true), wall);
+  EXPECT_EQ(cone_hub_face(s, false), wall + disc);
+}
+
+TEST(ConePattern, FanStackIsTheFlatFoldedWallAndItsRingsZFold) {
+  const ConeSpec s = open_cone();
+  CreasePattern p = cone_crease_pattern(s);
+  const int G = 2 * s.pleats;
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const double slant = std::hypot(s.base_radius, z_apex);
+  const double beta = 2 * std::asin(s.base_radius * std::sin(kPi / G) / slant);
+  auto planar_isometry_closed = [&](const std::vector<Vec3>& x) {
+    for (const PatternEdge& e : p.edges) {
+      const auto [a, b] = e.vertices;
+      EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(), (x[a] - x[b]).norm(),
+                  1e-12);
+    }
+    for (const auto& f : p.faces) {  // quads: the fourth corner in the first three's plane
+      const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
+      EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
+    }
+    for (const auto& [e0, e1] : p.seams) {
+      EXPECT_NEAR((x[p.edges[e0].vertices[0]] - x[p.edges[e1].vertices[1]]).norm(), 0, 1e-12);
+      EXPECT_NEAR((x[p.edges[e0].vertices[1]] - x[p.edges[e1].vertices[0]]).norm(), 0, 1e-12);
+    }
+  };
+  // Rings flat: one facet's place, every vertex at its flat distance from the apex.
+  const std::vector<Vec3> flat = cone_fan_stack(s, p, 0);
+  planar_isometry_closed(flat);
+  for (std::size_t v = 0; v < flat.size(); ++v) {
+    EXPECT_NEAR(flat[v].z(), 0, 1e-15);
+    EXPECT_NEAR(flat[v].norm(), p.vertices_flat_m[v].norm(), 1e-12);
+    EXPECT_LE(std::abs(std::atan2(flat[v].y(), flat[v].x())), 0.5 * beta + 1e-12);
+  }
+  // Rings at 90 degrees: each ring crease folded by 90 degrees of its own kind, each
+  // generator by 180 degrees.
+  p.vertices_folded_m = cone_fan_stack(s, p, 0.5 * kPi);
+  planar_isometry_closed(p.vertices_folded_m);
+  int rings = 0;
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    const PatternEdge& edge = p.edges[e];
+    if (edge.face_count() != 2) continue;
+    const double measured = measured_fold_angle(p, static_cast<int>(e));
+    if (std::abs(std::abs(edge.fold_angle) - s.axial_fold_angle) < 1e-12) {
+      ++rings;
+      EXPECT_NEAR(measured, std::copysign(0.5 * kPi, edge.fold_angle), 1e-9) << "edge " << e;
+    } else {
+      EXPECT_NEAR(std::abs(measured), kPi, 1e-6) << "edge " << e;
+    }
+  }
+  EXPECT_EQ(rings, s.axial_folds * (G + 1));
+  // Rings at 180 degrees: flat folded again.
+  for (const Vec3& x : cone_fan_stack(s, p, kPi)) EXPECT_NEAR(x.z(), 0, 1e-12);
+  // Only for the open wall.
+  ConeSpec closed = s;
+  closed.base_disc = true;
+  EXPECT_THROW(cone_fan_stack(closed, cone_crease_pattern(closed), 0), InputError);
+}
+
+}  // namespace
+}  // namespace finseg
