@@ -3,6 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -27,6 +28,28 @@ using SparseLU = Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>;
 constexpr double kTargetError = 4 * std::numeric_limits<double>::epsilon();
 constexpr double kBackwardError = 1e-14;
 constexpr int kMaxRefinements = 20;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Runs `analyse` and `factorize`, counting both in linear_solve_counters().
+template <class Analyse, class Factorize>
+void timed(bool analyse_first, Analyse analyse, Factorize factorize) {
+  LinearSolveCounters& c = linear_solve_counters();
+  auto t = Clock::now();
+  if (analyse_first) {
+    analyse();
+    ++c.analyses;
+    c.analyse_s += seconds_since(t);
+    t = Clock::now();
+  }
+  factorize();
+  ++c.factorizations;
+  c.factor_s += seconds_since(t);
+}
 
 // Newton iterations solve long runs of systems with one sparsity pattern: the symbolic
 // analysis (fill-reducing ordering) is kept while the pattern stays.
@@ -70,11 +93,10 @@ struct SymmetricCache {
 };
 
 bool factor(Cholmod& f, Pattern& pattern, const SpMat& S) {
-  if (!pattern.same(S)) {
-    f.analyzePattern(S);
-    pattern.remember(S);
-  }
-  f.factorize(S);
+  const bool analyse = !pattern.same(S);
+  if (analyse) pattern.remember(S);
+  timed(
+      analyse, [&] { f.analyzePattern(S); }, [&] { f.factorize(S); });
   return f.info() == Eigen::Success;
 }
 
@@ -110,11 +132,11 @@ bool refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b, E
 
 bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   thread_local LuCache cache;
-  if (!cache.pattern.same(A)) {
-    cache.lu.analyzePattern(A);
-    cache.pattern.remember(A);
-  }
-  cache.lu.factorize(A);
+  const bool analyse = !cache.pattern.same(A);
+  if (analyse) cache.pattern.remember(A);
+  timed(
+      analyse, [&] { cache.lu.analyzePattern(A); }, [&] { cache.lu.factorize(A); });
+  ++linear_solve_counters().lu_factorizations;
   if (cache.lu.info() != Eigen::Success) return false;
   x = cache.lu.solve(b);
   return cache.lu.info() == Eigen::Success && x.allFinite();
@@ -122,11 +144,14 @@ bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 
 // The symmetric path; nullopt if it does not apply (the factorization or the refinement
 // failed), so that LU decides.
-std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const Eigen::VectorXd& b,
-                                               Eigen::VectorXd& x, int& steps) {
+// An exactly symmetric A (asymmetry 0: a Newton matrix that is its own symmetric part) is
+// factored as it is.
+std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, bool exactly_symmetric,
+                                               const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                               int& steps) {
   thread_local SymmetricCache cache;
-  SpMat S = SpMat(A.transpose()) + A;  // pattern of A + A^T, kept even where values cancel
-  S *= 0.5;
+  const SpMat S_formed = exactly_symmetric ? SpMat() : symmetric_part(A);
+  const SpMat& S = exactly_symmetric ? A : S_formed;
   if (factor(cache.automatic, cache.automatic_pattern, S)) {
     if (!refined_solve(cache.automatic, A, b, x, steps)) return std::nullopt;
     return cache.automatic.is_ll() ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
@@ -141,13 +166,26 @@ std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const Eigen::Vect
 
 }  // namespace
 
+LinearSolveCounters& linear_solve_counters() {
+  thread_local LinearSolveCounters counters;
+  return counters;
+}
+
+SpMat symmetric_part(const SpMat& A) {
+  SpMat S = SpMat(A.transpose()) + A;  // pattern of A + A^T, kept even where values cancel
+  S *= 0.5;
+  return S;
+}
+
 double asymmetry_ratio(const SpMat& A) {
   const double A_norm = A.norm();
   if (A_norm == 0) return 0;
   return (A - SpMat(A.transpose())).norm() / A_norm;
 }
 
-bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+namespace {
+
+bool solve_system(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   LinearSolveInfo* info) {
   SpMat Ac = A;
   Ac.makeCompressed();
@@ -162,7 +200,7 @@ bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
   report.asymmetry = asymmetry_ratio(Ac);
   bool ok = false;
   if (Ac.rows() > 0 && Ac.rows() == Ac.cols() && report.asymmetry <= kSymmetricAsymmetry) {
-    if (const auto path = symmetric_solve(Ac, b, x, report.refinements)) {
+    if (const auto path = symmetric_solve(Ac, report.asymmetry == 0, b, x, report.refinements)) {
       report.path = *path;
       ok = true;
     }
@@ -172,6 +210,17 @@ bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
     ok = lu_solve(Ac, b, x);
   }
   if (info != nullptr) *info = report;
+  return ok;
+}
+
+}  // namespace
+
+bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                  LinearSolveInfo* info) {
+  const auto t0 = Clock::now();
+  ++linear_solve_counters().solves;
+  const bool ok = solve_system(A, b, x, info);
+  linear_solve_counters().total_s += seconds_since(t0);
   return ok;
 }
 
