@@ -111,23 +111,27 @@ double backward_error(const SpMat& A_abs, const Eigen::VectorXd& b, const Eigen:
   return e;
 }
 
-// Solves with the factor of the symmetric part and refines against A; false if the
-// backward error does not reach kBackwardError.
+// Solves with the factor of the symmetric part and refines against A, keeping the iterate of
+// least backward error (a last step can undo some of the gain: 4.9e-15 -> 1.6e-14 on a
+// generalized-alpha matrix of a sheet); false if it does not reach kBackwardError.
 bool refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    int& steps) {
   const SpMat A_abs = A.cwiseAbs();
   x = f.solve(b);
-  double e_prev = INFINITY;
+  Eigen::VectorXd best;
+  double e_best = INFINITY;
   for (steps = 0;; ++steps) {
-    if (!x.allFinite()) return false;
+    if (!x.allFinite()) break;
     const Eigen::VectorXd r = b - A * x;
     const double e = backward_error(A_abs, b, x, r);
-    if (e <= kTargetError || steps == kMaxRefinements || e > 0.5 * e_prev) {
-      return e <= kBackwardError;
-    }
-    e_prev = e;
+    const double e_prev = e_best;
+    if (e < e_best) e_best = e, best = x;
+    if (e <= kTargetError || steps == kMaxRefinements || e > 0.5 * e_prev) break;
     x += f.solve(r);
   }
+  if (e_best > kBackwardError) return false;
+  x = best;
+  return true;
 }
 
 bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -158,6 +162,7 @@ std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, bool exactly_symm
   }
   // L L^T met a non-positive pivot (indefinite); L D L^T failed only on an exact zero pivot.
   if (!cache.automatic.is_ll()) return std::nullopt;
+  ++linear_solve_counters().indefinite;
   if (factor(cache.ldlt, cache.ldlt_pattern, S) && refined_solve(cache.ldlt, A, b, x, steps)) {
     return LinearSolvePath::LDLT;
   }

@@ -26,6 +26,7 @@ struct LinearSolveInfo {
 /// Work and time of sparse_solve in the calling thread since the last reset (benchmarks).
 struct LinearSolveCounters {
   long solves = 0, analyses = 0, factorizations = 0, lu_factorizations = 0;
+  long indefinite = 0;   ///< supernodal L L^T failed (not positive definite): simplicial L D L^T
   double analyse_s = 0;  ///< symbolic analyses (fill-reducing orderings)
   double factor_s = 0;   ///< numeric factorizations, failed ones included
   double total_s = 0;    ///< whole calls: also the checks, triangular solves and refinement
