@@ -148,14 +148,14 @@ bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 
 // The symmetric path; nullopt if it does not apply (the factorization or the refinement
 // failed), so that LU decides.
-// An exactly symmetric A (asymmetry 0: a Newton matrix that is its own symmetric part) is
-// factored as it is.
+// `exactly_symmetric`: asymmetry 0 (a Newton matrix that is its own symmetric part). Its
+// symmetric part is still formed: its pattern may not be symmetric (a stored zero), and
+// factoring such a matrix directly crashed CHOLMOD (ContactDynamics.StaticSolverHoldsAPlate...).
 std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, bool exactly_symmetric,
                                                const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                int& steps) {
   thread_local SymmetricCache cache;
-  const SpMat S_formed = exactly_symmetric ? SpMat() : symmetric_part(A);
-  const SpMat& S = exactly_symmetric ? A : S_formed;
+  const SpMat S = symmetric_part(A);  // also for a symmetric A: a symmetric pattern
   if (factor(cache.automatic, cache.automatic_pattern, S)) {
     // L L^T of a positive definite matrix is backward stable: for an exactly symmetric A, LU
     // would add fill, not accuracy, where the refinement stalls just above kBackwardError
