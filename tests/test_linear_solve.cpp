@@ -198,5 +198,17 @@ TEST(LinearSolve, AsymmetryRatio) {
   EXPECT_EQ(asymmetry_ratio(SpMat(3, 3)), 0);
 }
 
+// The symmetric part of the convected grid operator is the Laplacian (the convection's skew
+// part cancels exactly), and as an exactly symmetric matrix it takes the Cholesky path.
+TEST(LinearSolve, SymmetricPartDropsTheSkewPart) {
+  const SpMat A = grid_matrix(12, -0.5, 0.3), L = grid_matrix(12, -0.5);
+  const SpMat S = symmetric_part(A);
+  EXPECT_EQ(asymmetry_ratio(S), 0);
+  EXPECT_EQ(Eigen::MatrixXd(S), Eigen::MatrixXd(L));
+  LinearSolveInfo info;
+  expect_solves(S, condition_number(12, -0.5), info);
+  EXPECT_NE(info.path, LinearSolvePath::LU);
+}
+
 }  // namespace
 }  // namespace finseg

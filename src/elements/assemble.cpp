@@ -86,6 +86,23 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   }
 }
 
+bool conservative_stiffness(const Model& model) {
+  for (const LoadDef& l : model.loads) {
+    if (l.follower || l.moment.squaredNorm() > 0) return false;  // a dead moment: no potential
+  }
+  return model.pressures.empty() && model.chambers.empty() && !model.contact.enabled;
+}
+
+bool has_velocity_forces(const Model& model) {
+  for (const ElementDef& e : model.elements) {
+    if (e.C.squaredNorm() > 0) return true;
+  }
+  for (const DriveDef& d : model.drives) {
+    if (d.damping > 0) return true;
+  }
+  return model.contact.enabled;
+}
+
 Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces) {
   Eigen::VectorXd g(model.num_dofs);
   for (size_t i = 0; i < model.bodies.size(); ++i) {

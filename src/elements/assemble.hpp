@@ -37,6 +37,18 @@ struct ForceJacobian {
 void compute_forces(const Model& model, const State& state, BodyForces& out,
                     ForceJacobian* jac = nullptr);
 
+/// True when every position-dependent force of `model` derives from a potential while the
+/// history (crease openings) is held: force elements, crease laws, plate cells, gravity, dead
+/// point forces, drive gauges. Its stiffness -dq is then symmetric but for the
+/// left-trivialisation term: body i's rotation block has the skew part (1/2)[tau_i]x (tau_i
+/// the torque on it), which vanishes at equilibrium. Follower loads, dead moments, pressure,
+/// gas chambers and contact (friction) make it false (docs/solvers.md, "Linear solves").
+bool conservative_stiffness(const Model& model);
+
+/// True when some force depends on the velocities (element, drive or contact damping,
+/// friction): their Jacobians are not symmetric away from rest.
+bool has_velocity_forces(const Model& model);
+
 /// Generalized force vector (num_dofs) of the free bodies, from per-body resultants.
 Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces);
 

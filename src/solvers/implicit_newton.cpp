@@ -54,6 +54,11 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   const NewtonResidual& res, int max_iterations, double pose_tol,
                   Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats) {
   ForceJacobian jac;
+  // A conservative, undamped model's iteration matrix is symmetric but for the skew part of
+  // its rotation Jacobian ((1/2)[tau]x per body, elements/assemble.hpp) and of the gyroscopic
+  // term, both small per step like the derivatives of M(q) left out already: its symmetric
+  // part goes to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
+  const bool symmetric = conservative_stiffness(model) && !has_velocity_forces(model);
   for (int it = 1; it <= max_iterations; ++it) {
     place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);
     compute_forces(model, state, f, &jac);
@@ -68,7 +73,8 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
       dv -= gyroscopic_jacobian(model, state);
     }
     const Eigen::VectorXd r = M * x - res.b - res.s * g;
-    const Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
+    Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
+    if (symmetric) A = symmetric_part(A);
     Eigen::VectorXd dx;
     if (!r.allFinite() || !sparse_solve(A, -r, dx)) return false;
     x += dx;

@@ -23,8 +23,23 @@ struct LinearSolveInfo {
   int refinements = 0;   ///< refinement steps taken on the symmetric path
 };
 
+/// Work and time of sparse_solve in the calling thread since the last reset (benchmarks).
+struct LinearSolveCounters {
+  long solves = 0, analyses = 0, factorizations = 0, lu_factorizations = 0;
+  long indefinite = 0;   ///< supernodal L L^T failed (not positive definite): simplicial L D L^T
+  double analyse_s = 0;  ///< symbolic analyses (fill-reducing orderings)
+  double factor_s = 0;   ///< numeric factorizations, failed ones included
+  double total_s = 0;    ///< whole calls: also the checks, triangular solves and refinement
+};
+
+/// This thread's counters; assign `{}` to reset.
+LinearSolveCounters& linear_solve_counters();
+
 /// Largest asymmetry ratio that counts as symmetric (assembly round-off); linear_solve.cpp.
 inline constexpr double kSymmetricAsymmetry = 1e-13;
+
+/// Symmetric part (A + A^T) / 2, with the pattern of A + A^T (also where values cancel).
+Eigen::SparseMatrix<double> symmetric_part(const Eigen::SparseMatrix<double>& A);
 
 /// Asymmetry ratio ||A - A^T||_F / ||A||_F (0 for a zero matrix).
 double asymmetry_ratio(const Eigen::SparseMatrix<double>& A);

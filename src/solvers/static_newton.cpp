@@ -67,6 +67,16 @@ double dead_moment_work(const Model& model, const State& state, const Eigen::Vec
   return w;
 }
 
+// The matrix Newton solves with, from the exact stiffness K. A conservative model's K is
+// symmetric but for the left-trivialisation term (1/2)[tau]x of each body's out-of-balance
+// torque (elements/assemble.hpp): its symmetric part is the Hessian of the energy in the
+// exponential chart at the current poses, so Newton on it converges quadratically, and it goes
+// to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
+Eigen::SparseMatrix<double> newton_matrix(const Model& model,
+                                          const Eigen::SparseMatrix<double>& K) {
+  return conservative_stiffness(model) ? symmetric_part(K) : K;
+}
+
 // A Newton solve that has not reduced the residual by this factor after `stall_iteration`
 // iterations is outside its region of quadratic convergence (the increment crosses a contact
 // or friction transition, or is simply too long): along a drive path it is cheaper, and keeps
@@ -92,7 +102,7 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     if (it == 0) r_start = r0;
     if (stall_iteration > 0 && it >= stall_iteration && r0 > kStallDrop * r_start) return false;
     const Eigen::VectorXd g = generalized_forces(model, f);
-    Eigen::SparseMatrix<double> K = -jac.dq;
+    const Eigen::SparseMatrix<double> K = newton_matrix(model, -jac.dq);
     Eigen::VectorXd dq;
     if (!sparse_solve(K, g, dq)) {
       // Slipping contact points carry a constant force: a part held only by friction
@@ -195,7 +205,10 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
     ++stats.newton_iterations;
     const Eigen::VectorXd res = generalized_forces(model, f) - M_h * (moved - h * v);
     Eigen::VectorXd dq;
-    if (!res.allFinite() || !sparse_solve(M_h - jac.dq, res, dq) || !dq.allFinite()) return false;
+    if (!res.allFinite() || !sparse_solve(newton_matrix(model, M_h - jac.dq), res, dq) ||
+        !dq.allFinite()) {
+      return false;
+    }
     // A step that turns a body by more than 0.1 rad is outside the linearisation: shorter h.
     if (newton_step_size(dq, L) > 0.1) return false;
     apply_pose_increment(model, state, dq);
