@@ -39,6 +39,34 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
     throw InputError(src, "discretisation.subdivisions",
                      fmt::format("{}; allowed range 1..64", s.subdivisions));
   }
+  if (!(s.segment_size >= 0 && std::isfinite(s.segment_size))) {
+    throw InputError(src, "discretisation.segment_size",
+                     fmt::format("{}; allowed: > 0 m, or 0 for subdivisions", s.segment_size));
+  }
+  if (!(s.crease_refinement >= 1 && s.crease_refinement <= 100)) {
+    throw InputError(src, "discretisation.crease_refinement",
+                     fmt::format("{}; allowed range [1, 100]", s.crease_refinement));
+  }
+  std::vector<bool> listed(p.edges.size(), false);
+  for (std::size_t k = 0; k < s.edge_laws.size(); ++k) {
+    const std::string field = fmt::format("crease_laws[{}]", k);
+    if (!s.edge_laws[k].law) throw InputError(src, field + ".law", "missing");
+    for (int e : s.edge_laws[k].edges) {
+      if (e < 0 || e >= static_cast<int>(p.edges.size())) {
+        throw InputError(src, field + ".edges",
+                         fmt::format("edge {} does not exist (0..{})", e, p.edges.size() - 1));
+      }
+      if (!is_crease(p.edges[e].assignment)) {
+        throw InputError(src, field + ".edges",
+                         fmt::format("edge {} is '{}': allowed M, V, F, U (a crease)", e,
+                                     static_cast<char>(p.edges[e].assignment)));
+      }
+      if (listed[e]) {
+        throw InputError(src, field + ".edges", fmt::format("edge {} listed twice", e));
+      }
+      listed[e] = true;
+    }
+  }
   for (int f : s.fixed_faces) {
     if (f < 0 || f >= static_cast<int>(p.faces.size())) {
       throw InputError(src, "fixtures.fixed_faces",
@@ -75,9 +103,13 @@ void fit_pose(const std::vector<Vec2>& flat, const std::vector<Vec3>& folded, co
   p = b + R * (Vec3(c_flat.x(), c_flat.y(), 0) - a);
 }
 
-// The law of a crease side by its pattern edge, or null for a plate joint.
-std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, const PatternSheetSpec& s,
+// The law of a crease side by its pattern edge (index `index`, -1 for a seam), or null for a
+// plate joint.
+std::shared_ptr<const CreaseLaw> law_of(const PatternEdge& e, int index, const PatternSheetSpec& s,
                                         const std::string& field, const std::string& src) {
+  for (const EdgeCreaseLaw& l : s.edge_laws) {
+    if (std::find(l.edges.begin(), l.edges.end(), index) != l.edges.end()) return l.law;
+  }
   EdgeAssignment a = e.assignment;
   if ((a == EdgeAssignment::Flat || a == EdgeAssignment::Unassigned) && e.fold_angle != 0) {
     a = e.fold_angle > 0 ? EdgeAssignment::Valley : EdgeAssignment::Mountain;
@@ -184,7 +216,11 @@ Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
 Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
                           const std::string& source) {
   validate_spec(spec, p, source);
-  const SegmentMesh mesh = subdivide_pattern(p, spec.subdivisions);
+  Subdivision cut;
+  cut.n = spec.subdivisions;
+  cut.segment_size = spec.segment_size;
+  cut.crease_refinement = spec.crease_refinement;
+  const SegmentMesh mesh = subdivide_pattern(p, cut);
   const bool folded = spec.start_folded && !mesh.folded_m.empty();
   Model m;
   m.source = source;
@@ -255,7 +291,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
       const PatternEdge& pe = l.seam >= 0 ? seam_edge : p.edges[l.pattern_edge];
       const std::string field = l.seam >= 0 ? fmt::format("finseg:seams[{}]", l.seam)
                                             : fmt::format("edges_assignment[{}]", l.pattern_edge);
-      if (auto law = law_of(pe, spec, field, source)) {
+      if (auto law = law_of(pe, l.seam >= 0 ? -1 : l.pattern_edge, spec, field, source)) {
         // The sheet's fold angle turns the right cell about the side's +y: FOLD's valley-
         // positive angle with the opposite sign (docs/fold.md).
         const double fold = !folded       ? 0.0

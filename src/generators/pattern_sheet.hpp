@@ -16,6 +16,12 @@ namespace finseg {
 
 class CreaseLaw;
 
+/// A crease law for a list of pattern edges (M, V, F or U; 0-based, as in the FOLD arrays).
+struct EdgeCreaseLaw {
+  std::vector<int> edges;
+  std::shared_ptr<const CreaseLaw> law;
+};
+
 /// Material, discretisation and creases of a sheet cut from a pattern. SI units.
 struct PatternSheetSpec {
   double thickness = 1e-4, youngs_modulus = 3e9, poisson_ratio = 0.3, density = 800;
@@ -23,11 +29,18 @@ struct PatternSheetSpec {
   /// the joints' bending and twist springs and the cell corrections use it; stretching and
   /// shear keep E and t.
   std::optional<double> bending_rigidity;
-  int subdivisions = 1;  ///< each face into n x n cells, 1..64
+  int subdivisions = 1;  ///< each face into n x n cells, 1..64 (when segment_size is 0)
+  /// m; > 0: cells of at most this side along every pattern edge, in place of subdivisions
+  /// (patterns/segment_mesh.hpp, Subdivision).
+  double segment_size = 0;
+  double crease_refinement = 1;  ///< >= 1: cells graded towards folded creases (Subdivision)
   /// Crease laws by assignment (M, V; F and U creases use them by the sign of their fold
   /// angle when given, else they are plate joints). Each law's moment is for a crease of
   /// `crease_law_length` (m); a cell side of length l carries the share l / that length.
   std::shared_ptr<const CreaseLaw> mountain_law, valley_law;
+  /// Laws for chosen pattern edges (0-based), before the assignment's: e.g. a crease folded
+  /// harder than the others, or an F edge made a crease. Each edge at most once.
+  std::vector<EdgeCreaseLaw> edge_laws;
   double crease_law_length = 1.0;
   /// True: each crease's law is shifted so that it rests at the crease's own fold angle in
   /// the pattern (edges_foldAngle, else the folded coordinates); false: the law's own rest.

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/grading.hpp"
 #include "core/so3.hpp"
 #include "core/text.hpp"
 
@@ -101,19 +102,10 @@ Mat3 rot_y(double a) {
 
 std::vector<double> panel_cell_bounds(const SheetSpec& s, double a, double b, bool crease_a,
                                       bool crease_b) {
-  const int n = s.cells_along;
-  std::vector<double> w(n, 1.0);
-  if (!s.cell_weights.empty()) {
-    w = s.cell_weights;
-  } else if (s.crease_refinement != 1.0 && n > 1) {
-    // Geometric grading: cells next to a crease are 1/refinement of the middle cell.
-    for (int j = 0; j < n; ++j) {
-      const double da = crease_a ? j : n;
-      const double db = crease_b ? n - 1 - j : n;
-      const double d = std::min(da, db) / std::max(1.0, (n - 1) / 2.0);
-      w[j] = std::pow(s.crease_refinement, std::min(1.0, d)) / s.crease_refinement;
-    }
-  }
+  const std::vector<double> w =
+      s.cell_weights.empty()
+          ? graded_cell_weights(s.cells_along, s.crease_refinement, crease_a, crease_b)
+          : s.cell_weights;
   double total = 0;
   for (double x : w) total += x;
   std::vector<double> bounds{a};

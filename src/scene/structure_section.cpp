@@ -2,6 +2,7 @@
 // zigzag generator's section and the crease pattern section of a scene file (docs/scene.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "generators/sheet.hpp"
 #include "generators/zigzag.hpp"
 #include "patterns/fold_format.hpp"
+#include "patterns/segment_mesh.hpp"
 #include "scene/scene_parts.hpp"
 
 namespace finseg {
@@ -235,6 +237,25 @@ std::optional<double> read_fold_unit(const Fields& p) {
   return p.number("unit", positive("m per unit, or m, cm, mm, um, nm, in, pt"));
 }
 
+// pattern.crease_laws: [{edges: [indices into the FOLD file's edge arrays, 0-based], law:
+// crease law map}, ...].
+std::vector<EdgeCreaseLaw> read_edge_laws(const Fields& p) {
+  std::vector<EdgeCreaseLaw> out;
+  const std::vector<YAML::Node> items =
+      sequence(p.node("crease_laws"), p.context("crease_laws"), "a list of {edges, law}");
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Fields item(items[k], {p.context().file, item_field(p.field("crease_laws"), k)},
+                      {"edges", "law"});
+    EdgeCreaseLaw l;
+    l.edges = item.integers("edges", 0, 100000000);
+    if (l.edges.empty()) item.fail("edges", "missing or empty: list FOLD edge indices (0-based)");
+    if (!item.has("law")) item.fail("law", "missing");
+    l.law = read_crease_law(item.node("law"), item.context("law"));
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
 // Model of a sheet cut from a FOLD crease pattern (generators/pattern_sheet.hpp).
 Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpec& base,
                          std::string& pattern_file) {
@@ -246,8 +267,8 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   }
   if (root.has("stiffness")) root.fail("stiffness", "not available with a pattern");
   const Fields p(root.node("pattern"), root.context("pattern"),
-                 {"file", "unit", "subdivisions", "start", "crease_law_length", "crease_rest",
-                  "mountain_law", "valley_law"});
+                 {"file", "unit", "subdivisions", "segment_size", "crease_refinement", "start",
+                  "crease_law_length", "crease_rest", "mountain_law", "valley_law", "crease_laws"});
   std::filesystem::path path = p.required_word("file");
   if (path.is_relative()) path = std::filesystem::path(root.context().file).parent_path() / path;
   pattern_file = path.string();
@@ -259,6 +280,11 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   s.density = base.density;
   s.damping_time = base.damping_time;
   s.subdivisions = p.integer("subdivisions", 2, 1, 64);
+  if (p.has("segment_size")) {
+    if (p.has("subdivisions")) p.fail("segment_size", "give either subdivisions or segment_size");
+    s.segment_size = p.number("segment_size", positive("m"));
+  }
+  s.crease_refinement = p.number("crease_refinement", 1.0, interval(1, 100, false, false));
   const std::string start = p.word("start", "folded");
   if (start != "folded" && start != "flat")
     p.fail("start", "'" + start + "'; allowed: folded, flat");
@@ -274,12 +300,22 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   if (p.has("valley_law")) {
     s.valley_law = read_crease_law(p.node("valley_law"), p.context("valley_law"));
   }
+  s.edge_laws = read_edge_laws(p);
   s.origin_W = sheet.vector3("origin", Vec3::Zero(), "m");
   const Fields fix = fixtures_of(root);
   if (fix.has("clamp_start")) fix.fail("clamp_start", "not available with a pattern: use panels");
   for (int f : fix.integers("panels", 1, 1000000)) s.fixed_faces.push_back(f - 1);
-  check_model_memory(static_cast<double>(pattern.faces.size()) * s.subdivisions, s.subdivisions,
-                     root.context().file, "pattern faces x subdivisions^2");
+  {
+    Subdivision cut;
+    cut.n = s.subdivisions;
+    cut.segment_size = s.segment_size;
+    cut.crease_refinement = s.crease_refinement;
+    const std::vector<int> counts =
+        edge_cell_counts(pattern, cut, root.context().file, p.field("segment_size"));
+    const double across = std::max(1, *std::max_element(counts.begin(), counts.end()));
+    check_model_memory(planned_cell_count(pattern, counts) / across, across, root.context().file,
+                       s.segment_size > 0 ? p.field("segment_size") : p.field("subdivisions"));
+  }
   Model m;
   in_scene_file(
       root.context().file, [&] { m = build_pattern_model(pattern, s); },
@@ -289,6 +325,11 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
         }
         if (api == "fixtures.fixed_faces") return std::string("fixtures.panels");
         if (api == "discretisation.subdivisions") return std::string("pattern.subdivisions");
+        if (api == "discretisation.segment_size") return std::string("pattern.segment_size");
+        if (api == "discretisation.crease_refinement") {
+          return std::string("pattern.crease_refinement");
+        }
+        if (api.rfind("crease_laws", 0) == 0) return "pattern." + api;
         if (api == "creases.law_length") return std::string("pattern.crease_law_length");
         return api;
       });
