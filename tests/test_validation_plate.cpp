@@ -149,37 +149,5 @@ TEST(PlateValidation, ExamplePlateSceneMatchesNavier) {
   EXPECT_NEAR(w / (0.00406235 * 2.5 * 1e-4 / D), 1, 2e-3) << w;
 }
 
-TEST(SegmentMesh, FacesMeetSideToSideAndCoverThePattern) {
-  // A triangle, a quadrilateral and a pentagon sharing sides: every pattern edge gets n
-  // cell sides, cells cover each face exactly, and every interior side has two cells.
-  CreasePattern p;
-  p.vertices_flat_m = {{0, 0}, {2, 0}, {2, 1}, {0, 1}, {1, 2}, {3, 0.5}, {3, 1.6}, {2.4, 2.2}};
-  p.faces = {{0, 1, 2, 3}, {3, 2, 4}, {1, 5, 6, 7, 2}};
-  p.edges = edges_from_faces(p.faces);
-  derive_edge_faces(p, "<mesh>");
-  for (int n : {1, 3}) {
-    const SegmentMesh mesh = subdivide_pattern(p, n);
-    std::vector<double> area(p.faces.size(), 0.0);
-    for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-      Outline o;
-      for (int v : mesh.cells[c]) o.push_back(mesh.flat_m[v]);
-      EXPECT_EQ(convexity_problem(o, 1e-12), "") << "cell " << c;
-      area[mesh.cell_face[c]] += polygon_area(o);
-    }
-    EXPECT_NEAR(area[0], 2.0, 1e-12);
-    EXPECT_NEAR(area[1], 1.0, 1e-12);
-    Outline pent;
-    for (int v : p.faces[2]) pent.push_back(p.vertices_flat_m[v]);
-    EXPECT_NEAR(area[2], polygon_area(pent), 1e-12);
-    // Sides: each cell side is shared (a link) or on the boundary; Euler: V - E + F = 1.
-    std::size_t sides = 0, on_edges = 0;
-    for (const auto& c : mesh.cells) sides += c.size();
-    for (const CellLink& l : mesh.links) on_edges += l.pattern_edge >= 0;
-    const std::size_t boundary = sides - 2 * mesh.links.size();
-    EXPECT_EQ(mesh.flat_m.size() - (mesh.links.size() + boundary) + mesh.cells.size(), 1u);
-    EXPECT_EQ(on_edges, 2u * n);  // the two interior pattern edges, n sides each
-  }
-}
-
 }  // namespace
 }  // namespace finseg
