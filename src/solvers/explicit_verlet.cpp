@@ -67,7 +67,14 @@ void forget(State& state) {
 void run_explicit(const Model& model, State& state, const SolverSettings& settings,
                   const OutputCallback& on_output, const ProgressCallback& on_progress,
                   SolverStats& stats) {
-  const double h = settings.dt > 0 ? settings.dt : automatic_step(model, state);
+  // Continuing a run: its step, unless the settings fix another (the automatic step of the
+  // resumed state differs from the start's wherever the stiffness changed, e.g. with a gas).
+  const SolverMemory& mem = state.solver;
+  const bool continues = mem.t == state.t && mem.next_output > state.t && mem.dt > 0 &&
+                         (settings.dt <= 0 || settings.dt == mem.dt);
+  const double h = continues         ? mem.dt
+                   : settings.dt > 0 ? settings.dt
+                                     : automatic_step(model, state);
   const double every = output_interval(settings);
   stats.smallest_step = stats.largest_step = h;
   set_quasi_static(state, false);
@@ -78,9 +85,8 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   ++stats.force_evaluations;
   // Continuing a run: the first kick uses the forces the interrupted run would have used,
   // and the step count goes on from where it was (t = t0 + n h exactly as before).
-  const SolverMemory& mem = state.solver;
-  const bool resumed = mem.t == state.t && mem.f_W.size() == f.f_W.size() &&
-                       mem.tau_W.size() == f.tau_W.size() && mem.next_output > state.t;
+  const bool resumed =
+      continues && mem.f_W.size() == f.f_W.size() && mem.tau_W.size() == f.tau_W.size();
   const double t0 = resumed ? mem.t_start : state.t;
   const long n0 = resumed ? mem.steps : 0;
   double next_output = resumed ? mem.next_output : t0 + every;

@@ -45,7 +45,12 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
                   SolverStats& stats) {
   const double every = output_interval(settings);
   const double h_max = settings.dt_max > 0 ? settings.dt_max : every;
-  double h = settings.dt > 0 ? settings.dt : std::min(h_max, every / 10);
+  // A run continued from a checkpoint keeps the interrupted run's output times and its next
+  // step (a fresh first step would take the run along other steps).
+  const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
+  double h = resumed && state.solver.dt > 0 ? std::min(h_max, state.solver.dt)
+             : settings.dt > 0              ? settings.dt
+                                            : std::min(h_max, every / 10);
   const double length_scale = std::max(model.sheet.length, 1e-3);
   const double tol = settings.atol + settings.rtol * length_scale;
   const std::unique_ptr<TimeStepper> stepper = make_stepper(settings, tol);
@@ -57,8 +62,6 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   compute_forces(model, state, f);
   ++stats.force_evaluations;
   stepper->begin(model, state, f);
-  // A run continued from a checkpoint keeps the interrupted run's output times.
-  const bool resumed = state.solver.t == state.t && state.solver.next_output > state.t;
   const double t0 = state.t;
   double next_output = resumed ? state.solver.next_output : t0 + every;
   // What a checkpoint at this output needs to continue exactly as this run does.
