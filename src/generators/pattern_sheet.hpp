@@ -49,8 +49,8 @@ struct PatternSheetSpec {
   /// the side (`D l / h`, as a plate joint's), and the cells next to it count that side's
   /// bending in their correction: the crease cells' bending next to the fold, which rigid
   /// cells miss, converges at second order (docs/stiffness.md, "Creases on cell sides").
-  /// False: the law alone (first order at creases).
-  bool crease_bending_in_series = false;
+  /// False: the law alone (first order at creases; kept for comparisons).
+  bool crease_bending_in_series = true;
   std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
   bool start_folded = true;      ///< start from the pattern's folded coordinates if any
   double damping_time = 0;       ///< stiffness-proportional damping C = damping_time K, s
