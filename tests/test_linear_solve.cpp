@@ -273,6 +273,7 @@ TEST(LinearSolve, NonFiniteSymmetricMatrixIsRefused) {
   EXPECT_EQ(cholesky_solve(S, Eigen::VectorXd::Ones(S.size()), x), CholeskyStatus::Failed);
   const SymmetricMatrix T = SymmetricMatrix::symmetric_part_of(grid_matrix(4, -0.5));
   EXPECT_FALSE(T.plus_diagonal(Eigen::VectorXd::Constant(T.size(), INFINITY)).finite());
+  EXPECT_FALSE(SymmetricMatrix::symmetric_part_of(SpMat(3, 4)).finite());
 }
 
 // Two patterns solved in turn (the static solver's stiffness and translation block) keep

@@ -283,8 +283,9 @@ SymmetricMatrix::SymmetricMatrix(SpMat S, bool finite) : S_(std::move(S)), finit
 }
 
 SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A) {
+  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);  // refused by the solves
   // (a + b) / 2 is commutative in floating point: S(i, j) == S(j, i) exactly.
-  return SymmetricMatrix(symmetric_part(A), A.rows() == A.cols());
+  return SymmetricMatrix(symmetric_part(A), true);
 }
 
 SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {

@@ -29,8 +29,8 @@ struct LinearSolveInfo {
 /// what CHOLMOD may be given directly. Made only by `symmetric_part_of` and `plus_diagonal`.
 class SymmetricMatrix {
  public:
-  /// (A + A^T) / 2 with the pattern of A + A^T; A square. Non-finite entries make it unusable
-  /// (`finite()` false: sparse_solve refuses it).
+  /// (A + A^T) / 2 with the pattern of A + A^T. A not square or with a non-finite entry makes
+  /// it unusable (`finite()` false: the solves refuse it).
   static SymmetricMatrix symmetric_part_of(const Eigen::SparseMatrix<double>& A);
   /// This matrix plus diag(d) (d finite; the pattern gains the diagonal).
   SymmetricMatrix plus_diagonal(const Eigen::VectorXd& d) const;
