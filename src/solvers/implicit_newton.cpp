@@ -73,10 +73,12 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
       dv -= gyroscopic_jacobian(model, state);
     }
     const Eigen::VectorXd r = M * x - res.b - res.s * g;
-    Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
-    if (symmetric) A = symmetric_part(A);
+    const Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
     Eigen::VectorXd dx;
-    if (!r.allFinite() || !sparse_solve(A, -r, dx)) return false;
+    if (!r.allFinite()) return false;
+    const bool solved = symmetric ? sparse_solve(SymmetricMatrix::symmetric_part_of(A), -r, dx)
+                                  : sparse_solve(A, -r, dx);
+    if (!solved) return false;
     x += dx;
     if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {
       place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);

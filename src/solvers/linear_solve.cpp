@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace finseg {
 namespace {
@@ -51,22 +55,59 @@ void timed(bool analyse_first, Analyse analyse, Factorize factorize) {
   c.factor_s += seconds_since(t);
 }
 
-// Newton iterations solve long runs of systems with one sparsity pattern: the symbolic
-// analysis (fill-reducing ordering) is kept while the pattern stays.
+// A sparsity pattern (compressed column storage), with a hash that rules out most other
+// patterns before the full comparison.
 struct Pattern {
   Eigen::VectorXi outer, inner;
-  bool set = false;
+  std::uint64_t hash = 0;
 
-  bool same(const SpMat& A) const {
-    if (!set || outer.size() != A.outerSize() + 1 || inner.size() != A.nonZeros()) return false;
+  static std::uint64_t hash_of(const SpMat& A) {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+    const auto mix = [&h](int v) { h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull; };
+    mix(static_cast<int>(A.rows()));
+    for (Eigen::Index k = 0; k <= A.outerSize(); ++k) mix(A.outerIndexPtr()[k]);
+    for (Eigen::Index k = 0; k < A.nonZeros(); ++k) mix(A.innerIndexPtr()[k]);
+    return h;
+  }
+  bool same(const SpMat& A, std::uint64_t h) const {
+    if (h != hash || outer.size() != A.outerSize() + 1 || inner.size() != A.nonZeros()) {
+      return false;
+    }
     return std::equal(outer.data(), outer.data() + outer.size(), A.outerIndexPtr()) &&
            std::equal(inner.data(), inner.data() + inner.size(), A.innerIndexPtr());
   }
-  void remember(const SpMat& A) {
+  void remember(const SpMat& A, std::uint64_t h) {
     outer = Eigen::Map<const Eigen::VectorXi>(A.outerIndexPtr(), A.outerSize() + 1);
     inner = Eigen::Map<const Eigen::VectorXi>(A.innerIndexPtr(), A.nonZeros());
-    set = true;
+    hash = h;
   }
+};
+
+// The factorizations of the last kCachedPatterns patterns, most recent first: a Newton run
+// alternates few patterns (the stiffness and the line search's translation block), and each
+// keeps its symbolic analysis. `Slot` holds a Pattern `pattern` and the factorization objects.
+template <class Slot>
+class PatternCache {
+ public:
+  // The slot of A's pattern; `fresh`: newly made (its factorizations need an analysis).
+  Slot& slot_for(const SpMat& A, bool& fresh) {
+    const std::uint64_t h = Pattern::hash_of(A);
+    for (auto it = slots_.begin(); it != slots_.end(); ++it) {
+      if ((*it)->pattern.same(A, h)) {
+        std::rotate(slots_.begin(), it, it + 1);
+        fresh = false;
+        return *slots_.front();
+      }
+    }
+    if (slots_.size() == static_cast<std::size_t>(kCachedPatterns)) slots_.pop_back();
+    slots_.insert(slots_.begin(), std::make_unique<Slot>());
+    slots_.front()->pattern.remember(A, h);
+    fresh = true;
+    return *slots_.front();
+  }
+
+ private:
+  std::vector<std::unique_ptr<Slot>> slots_;
 };
 
 // CHOLMOD on the lower triangle, silent (a failed Cholesky is an expected event here).
@@ -77,35 +118,70 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
     cholmod().print = 0;
   }
   bool is_ll() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_ll != 0; }
+  // A factorization that succeeded is of a positive definite matrix: L L^T, or a simplicial
+  // L D L^T (no pivoting) with every D_jj > 0 (D_jj first in column j).
+  bool positive_definite() const {
+    if (info() != Eigen::Success || m_cholmodFactor == nullptr) return false;
+    const cholmod_factor& L = *m_cholmodFactor;
+    if (L.is_ll != 0) return true;
+    if (L.is_super != 0) return false;
+    const auto* p = static_cast<const int*>(L.p);
+    const auto* x = static_cast<const double*>(L.x);
+    for (std::size_t j = 0; j < L.n; ++j) {
+      if (!(x[p[j]] > 0)) return false;
+    }
+    return true;
+  }
 };
 
-struct LuCache {
-  SparseLU lu;
+struct LuSlot {
   Pattern pattern;
+  SparseLU lu;
 };
 
 // CHOLMOD chooses simplicial L D L^T for small systems and supernodal L L^T (BLAS) for
 // large ones; the latter cannot factor an indefinite matrix, which then goes to `ldlt`.
-struct SymmetricCache {
+struct SymmetricSlot {
+  Pattern pattern;
   Cholmod automatic{Eigen::CholmodAuto};
   Cholmod ldlt{Eigen::CholmodLDLt};
-  Pattern automatic_pattern, ldlt_pattern;
+  bool automatic_analysed = false, ldlt_analysed = false;
 };
 
-bool factor(Cholmod& f, Pattern& pattern, const SpMat& S) {
-  const bool analyse = !pattern.same(S);
-  if (analyse) pattern.remember(S);
+// From this many rows on, the analysis tries both AMD and METIS and keeps the ordering of
+// fewer flops (CHOLMOD's default tries METIS only where AMD fills much). On the 10^4-segment
+// sheet METIS needs 2.28e9 flops per factorization against AMD's 2.57e9; its analysis costs
+// about twice AMD's, negligible beside the factorizations it serves. Below, as before: the
+// tests' models (up to about 6 000 dofs) keep their orderings, and their results their bits.
+constexpr Eigen::Index kCompareOrderings = 20000;
+
+bool factor(Cholmod& f, bool& analysed, const SpMat& S) {
+  const bool analyse = !analysed;
+  analysed = true;
+  // nmethods = 3: the given permutation (none here, skipped), AMD and METIS.
+  if (analyse && S.rows() >= kCompareOrderings) f.cholmod().nmethods = 3;
   timed(
       analyse, [&] { f.analyzePattern(S); }, [&] { f.factorize(S); });
   return f.info() == Eigen::Success;
 }
 
-// Componentwise backward error of x (0 where a row of |A| |x| + |b| is zero and so is r).
-double backward_error(const SpMat& A_abs, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
+SymmetricSlot& symmetric_slot(const SpMat& S) {
+  thread_local PatternCache<SymmetricSlot> cache;
+  bool fresh = false;
+  return cache.slot_for(S, fresh);
+}
+
+// Componentwise backward error of x with residual r = b - A x (0 where a row of |A| |x| + |b|
+// is zero and so is r); |A| |x| without forming |A|.
+double backward_error(const SpMat& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x,
                       const Eigen::VectorXd& r) {
-  const Eigen::VectorXd w = A_abs * x.cwiseAbs() + b.cwiseAbs();
+  Eigen::VectorXd w = b.cwiseAbs();
+  for (Eigen::Index c = 0; c < A.outerSize(); ++c) {
+    const double x_c = std::abs(x[c]);
+    for (SpMat::InnerIterator it(A, c); it; ++it) w[it.row()] += std::abs(it.value()) * x_c;
+  }
   double e = 0;
-  for (int i = 0; i < r.size(); ++i) {
+  for (Eigen::Index i = 0; i < r.size(); ++i) {
     if (r[i] != 0) e = std::max(e, w[i] > 0 ? std::abs(r[i]) / w[i] : INFINITY);
   }
   return e;
@@ -117,63 +193,69 @@ double backward_error(const SpMat& A_abs, const Eigen::VectorXd& b, const Eigen:
 // undefined).
 double refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                      int& steps) {
-  const SpMat A_abs = A.cwiseAbs();
   x = f.solve(b);
   Eigen::VectorXd best;
   double e_best = INFINITY;
   for (steps = 0;; ++steps) {
     if (!x.allFinite()) break;
     const Eigen::VectorXd r = b - A * x;
-    const double e = backward_error(A_abs, b, x, r);
+    const double e = backward_error(A, b, x, r);
     const double e_prev = e_best;
     if (e < e_best) e_best = e, best = x;
     if (e <= kTargetError || steps == kMaxRefinements || e > 0.5 * e_prev) break;
     x += f.solve(r);
   }
-  if (e_best < INFINITY) x = best;
+  linear_solve_counters().refinements += steps;
+  if (e_best < INFINITY) x = std::move(best);
   return e_best;
 }
 
 bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
-  thread_local LuCache cache;
-  const bool analyse = !cache.pattern.same(A);
-  if (analyse) cache.pattern.remember(A);
+  thread_local PatternCache<LuSlot> cache;
+  bool analyse = false;
+  LuSlot& slot = cache.slot_for(A, analyse);
   timed(
-      analyse, [&] { cache.lu.analyzePattern(A); }, [&] { cache.lu.factorize(A); });
+      analyse, [&] { slot.lu.analyzePattern(A); }, [&] { slot.lu.factorize(A); });
   ++linear_solve_counters().lu_factorizations;
-  if (cache.lu.info() != Eigen::Success) return false;
-  x = cache.lu.solve(b);
-  return cache.lu.info() == Eigen::Success && x.allFinite();
+  if (slot.lu.info() != Eigen::Success) return false;
+  x = slot.lu.solve(b);
+  return slot.lu.info() == Eigen::Success && x.allFinite();
 }
 
-// The symmetric path; nullopt if it does not apply (the factorization or the refinement
-// failed), so that LU decides.
-// `exactly_symmetric`: asymmetry 0 (a Newton matrix that is its own symmetric part). Its
-// symmetric part is still formed: its pattern may not be symmetric (a stored zero), and
-// factoring such a matrix directly crashed CHOLMOD (ContactDynamics.StaticSolverHoldsAPlate...).
-std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, bool exactly_symmetric,
+// The symmetric path for A, whose symmetric part S is (S itself when `exact`); nullopt if it
+// does not apply (the factorization or the refinement failed), so that LU decides.
+// A positive definite factor of an exactly symmetric matrix is backward stable: it is
+// accepted whatever the refinement reached (LU would add fill, not accuracy, where the
+// refinement stalls just above kBackwardError: 1.7e-14 on a generalized-alpha matrix of a
+// 10^4-segment sheet; at 10^5 the LU took more than 8 GB).
+std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, bool exact,
                                                const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                int& steps) {
-  thread_local SymmetricCache cache;
-  const SpMat S = symmetric_part(A);  // also for a symmetric A: a symmetric pattern
-  if (factor(cache.automatic, cache.automatic_pattern, S)) {
-    // L L^T of a positive definite matrix is backward stable: for an exactly symmetric A, LU
-    // would add fill, not accuracy, where the refinement stalls just above kBackwardError
-    // (1.7e-14 on a generalized-alpha matrix of a 10^4-segment sheet; at 10^5 the LU took
-    // more than 8 GB).
-    const bool ll = cache.automatic.is_ll();
-    const double e = refined_solve(cache.automatic, A, b, x, steps);
-    if (e > kBackwardError && !(ll && exactly_symmetric && e < INFINITY)) return std::nullopt;
-    return ll ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
+  SymmetricSlot& slot = symmetric_slot(S);
+  if (factor(slot.automatic, slot.automatic_analysed, S)) {
+    const bool pd = slot.automatic.positive_definite();
+    const double e = refined_solve(slot.automatic, A, b, x, steps);
+    if (e > kBackwardError && !(pd && exact && e < INFINITY)) return std::nullopt;
+    return slot.automatic.is_ll() ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
   }
   // L L^T met a non-positive pivot (indefinite); L D L^T failed only on an exact zero pivot.
-  if (!cache.automatic.is_ll()) return std::nullopt;
+  if (!slot.automatic.is_ll()) return std::nullopt;
   ++linear_solve_counters().indefinite;
-  if (factor(cache.ldlt, cache.ldlt_pattern, S) &&
-      refined_solve(cache.ldlt, A, b, x, steps) <= kBackwardError) {
+  if (factor(slot.ldlt, slot.ldlt_analysed, S) &&
+      refined_solve(slot.ldlt, A, b, x, steps) <= kBackwardError) {
     return LinearSolvePath::LDLT;
   }
   return std::nullopt;
+}
+
+// Flushes subnormal entries to zero (Eigen's SparseLU never returns on them: a modulus of
+// 1e-320 Pa made some; they are zero for every purpose here); false if an entry is not finite.
+bool clean_entries(SpMat& A) {
+  for (double* v = A.valuePtr(); v != A.valuePtr() + A.nonZeros(); ++v) {
+    if (!std::isfinite(*v)) return false;
+    if (std::abs(*v) < std::numeric_limits<double>::min()) *v = 0;
+  }
+  return true;
 }
 
 }  // namespace
@@ -195,24 +277,39 @@ double asymmetry_ratio(const SpMat& A) {
   return (A - SpMat(A.transpose())).norm() / A_norm;
 }
 
+SymmetricMatrix::SymmetricMatrix(SpMat S, bool finite) : S_(std::move(S)), finite_(finite) {
+  S_.makeCompressed();
+  finite_ = finite_ && clean_entries(S_);
+}
+
+SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A) {
+  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);  // refused by the solves
+  // (a + b) / 2 is commutative in floating point: S(i, j) == S(j, i) exactly.
+  return SymmetricMatrix(symmetric_part(A), true);
+}
+
+SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
+  SpMat D(S_.rows(), S_.cols());
+  D.reserve(Eigen::VectorXi::Ones(S_.cols()));
+  for (Eigen::Index i = 0; i < d.size(); ++i) D.insert(i, i) = d[i];
+  return SymmetricMatrix(S_ + D, finite_ && d.allFinite());
+}
+
 namespace {
 
 bool solve_system(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   LinearSolveInfo* info) {
   SpMat Ac = A;
   Ac.makeCompressed();
-  // Eigen's SparseLU never returns on subnormal entries (a modulus of 1e-320 Pa made them):
-  // they are zero for every purpose here. A non-finite entry has no solution.
-  for (double* v = Ac.valuePtr(); v != Ac.valuePtr() + Ac.nonZeros(); ++v) {
-    if (!std::isfinite(*v)) return false;
-    if (std::abs(*v) < std::numeric_limits<double>::min()) *v = 0;
-  }
-  if (!b.allFinite()) return false;
+  if (!clean_entries(Ac) || !b.allFinite()) return false;
   LinearSolveInfo report;
   report.asymmetry = asymmetry_ratio(Ac);
   bool ok = false;
   if (Ac.rows() > 0 && Ac.rows() == Ac.cols() && report.asymmetry <= kSymmetricAsymmetry) {
-    if (const auto path = symmetric_solve(Ac, report.asymmetry == 0, b, x, report.refinements)) {
+    // Also for a symmetric A: its stored pattern need not be (a stored zero), and CHOLMOD
+    // crashed on such a pattern (ContactDynamics.StaticSolverHoldsAPlateInsideTheCone).
+    const SpMat S = symmetric_part(Ac);
+    if (const auto path = symmetric_solve(Ac, S, report.asymmetry == 0, b, x, report.refinements)) {
       report.path = *path;
       ok = true;
     }
@@ -225,15 +322,64 @@ bool solve_system(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
   return ok;
 }
 
+// Counts a whole call's time and number.
+template <class Solve>
+auto counted(Solve solve) {
+  const auto t0 = Clock::now();
+  ++linear_solve_counters().solves;
+  const auto result = solve();
+  linear_solve_counters().total_s += seconds_since(t0);
+  return result;
+}
+
 }  // namespace
 
 bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   LinearSolveInfo* info) {
-  const auto t0 = Clock::now();
-  ++linear_solve_counters().solves;
-  const bool ok = solve_system(A, b, x, info);
-  linear_solve_counters().total_s += seconds_since(t0);
-  return ok;
+  return counted([&] { return solve_system(A, b, x, info); });
+}
+
+bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                  LinearSolveInfo* info) {
+  return counted([&] {
+    if (!S.finite() || !b.allFinite()) return false;
+    LinearSolveInfo report;
+    bool ok = false;
+    if (S.size() > 0) {
+      if (const auto path =
+              symmetric_solve(S.matrix(), S.matrix(), true, b, x, report.refinements)) {
+        report.path = *path;
+        ok = true;
+      }
+    }
+    if (!ok) {
+      report.path = LinearSolvePath::LU;
+      ok = lu_solve(S.matrix(), b, x);
+    }
+    if (info != nullptr) *info = report;
+    return ok;
+  });
+}
+
+CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
+                              Eigen::VectorXd& x, LinearSolveInfo* info) {
+  return counted([&] {
+    if (!S.finite() || !b.allFinite() || S.size() == 0) return CholeskyStatus::Failed;
+    SymmetricSlot& slot = symmetric_slot(S.matrix());
+    LinearSolveInfo report;
+    if (!factor(slot.automatic, slot.automatic_analysed, S.matrix()) ||
+        !slot.automatic.positive_definite()) {
+      ++linear_solve_counters().indefinite;
+      return CholeskyStatus::NotPositiveDefinite;
+    }
+    // Backward stable: accepted whatever the refinement reaches (see symmetric_solve).
+    if (refined_solve(slot.automatic, S.matrix(), b, x, report.refinements) == INFINITY) {
+      return CholeskyStatus::Failed;
+    }
+    report.path = slot.automatic.is_ll() ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
+    if (info != nullptr) *info = report;
+    return CholeskyStatus::Solved;
+  });
 }
 
 }  // namespace finseg

@@ -1,8 +1,9 @@
 // Sparse linear solves for the Newton iterations. A system symmetric up to round-off goes to
 // CHOLMOD (sparse Cholesky or L D L^T with a fill-reducing ordering), refined against the
 // matrix; any other (friction, follower loads, a rotation Jacobian away from equilibrium), or
-// one CHOLMOD cannot factor, to Eigen's SparseLU (COLAMD). Each factorization keeps its
-// symbolic analysis between solves of one sparsity pattern. docs/solvers.md: when and why.
+// one CHOLMOD cannot factor, to Eigen's SparseLU (COLAMD). A SymmetricMatrix (symmetric by
+// construction) goes to CHOLMOD without these checks. The symbolic analyses of the last few
+// sparsity patterns are kept between solves. docs/solvers.md: when and why.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -23,10 +24,38 @@ struct LinearSolveInfo {
   int refinements = 0;   ///< refinement steps taken on the symmetric path
 };
 
+/// A square sparse matrix symmetric by construction, in its values and in its stored pattern
+/// (entry (i, j) stored iff (j, i) is), with finite entries and subnormals flushed to zero:
+/// what CHOLMOD may be given directly. Made only by `symmetric_part_of` and `plus_diagonal`.
+class SymmetricMatrix {
+ public:
+  /// (A + A^T) / 2 with the pattern of A + A^T. A not square or with a non-finite entry makes
+  /// it unusable (`finite()` false: the solves refuse it).
+  static SymmetricMatrix symmetric_part_of(const Eigen::SparseMatrix<double>& A);
+  /// This matrix plus diag(d) (d finite; the pattern gains the diagonal).
+  SymmetricMatrix plus_diagonal(const Eigen::VectorXd& d) const;
+  const Eigen::SparseMatrix<double>& matrix() const { return S_; }
+  bool finite() const { return finite_; }
+  Eigen::Index size() const { return S_.rows(); }
+
+ private:
+  SymmetricMatrix(Eigen::SparseMatrix<double> S, bool finite);
+  Eigen::SparseMatrix<double> S_;
+  bool finite_ = true;
+};
+
+/// Outcome of cholesky_solve.
+enum class CholeskyStatus {
+  Solved,               ///< positive definite: x solves S x = b
+  NotPositiveDefinite,  ///< a pivot was not positive (indefinite or singular); x undefined
+  Failed,               ///< S or b not finite; x undefined
+};
+
 /// Work and time of sparse_solve in the calling thread since the last reset (benchmarks).
 struct LinearSolveCounters {
   long solves = 0, analyses = 0, factorizations = 0, lu_factorizations = 0;
-  long indefinite = 0;   ///< supernodal L L^T failed (not positive definite): simplicial L D L^T
+  long indefinite = 0;   ///< not positive definite (L D L^T, LU or the caller's shift followed)
+  long refinements = 0;  ///< refinement steps (each a matrix product and triangular solves)
   double analyse_s = 0;  ///< symbolic analyses (fill-reducing orderings)
   double factor_s = 0;   ///< numeric factorizations, failed ones included
   double total_s = 0;    ///< whole calls: also the checks, triangular solves and refinement
@@ -34,6 +63,10 @@ struct LinearSolveCounters {
 
 /// This thread's counters; assign `{}` to reset.
 LinearSolveCounters& linear_solve_counters();
+
+/// Analyses kept per factorization: distinct sparsity patterns whose symbolic analysis is
+/// reused (the static solver alternates the stiffness and its translation block).
+inline constexpr int kCachedPatterns = 4;
 
 /// Largest asymmetry ratio that counts as symmetric (assembly round-off); linear_solve.cpp.
 inline constexpr double kSymmetricAsymmetry = 1e-13;
@@ -48,5 +81,15 @@ double asymmetry_ratio(const Eigen::SparseMatrix<double>& A);
 /// entry of A or b is not finite. Fills `info` when given.
 bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b,
                   Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
+
+/// Solves S x = b as sparse_solve does, without the symmetry checks: CHOLMOD's L L^T (or,
+/// small, L D L^T); an indefinite S is factored again as simplicial L D L^T, then LU.
+bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                  LinearSolveInfo* info = nullptr);
+
+/// Solves S x = b only if S is positive definite (CHOLMOD L L^T, or L D L^T with positive D),
+/// refined against S; otherwise reports it, so that the caller can shift S (static solver).
+CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
+                              Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
 
 }  // namespace finseg

@@ -72,9 +72,37 @@ double dead_moment_work(const Model& model, const State& state, const Eigen::Vec
 // torque (elements/assemble.hpp): its symmetric part is the Hessian of the energy in the
 // exponential chart at the current poses, so Newton on it converges quadratically, and it goes
 // to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
-Eigen::SparseMatrix<double> newton_matrix(const Model& model,
-                                          const Eigen::SparseMatrix<double>& K) {
-  return conservative_stiffness(model) ? symmetric_part(K) : K;
+bool solve_newton_system(const Model& model, const Eigen::SparseMatrix<double>& K,
+                         const Eigen::VectorXd& g, Eigen::VectorXd& dq, LinearSolveInfo* info) {
+  if (!conservative_stiffness(model)) return sparse_solve(K, g, dq, info);
+  return sparse_solve(SymmetricMatrix::symmetric_part_of(K), g, dq, info);
+}
+
+// Levenberg-Marquardt shift of an indefinite Newton matrix: K + mu diag(|K_ii|) is factored
+// with increasing mu until the L L^T succeeds (docs/solvers.md, "Static solver").
+constexpr double kFirstShift = 1e-3, kShiftGrowth = 4, kShiftDecay = 0.25, kSmallestShift = 1e-6;
+constexpr int kMaxShifts = 12;
+
+// Newton step of a conservative model: K (symmetric part) if positive definite, else the
+// shifted matrix. `mu` is the shift of the last step (0: none) and on return this one's.
+// False if no shift up to the largest made K positive definite or K is not finite.
+bool shifted_newton_step(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& g,
+                         Eigen::VectorXd& dq, double& mu) {
+  const SymmetricMatrix S = SymmetricMatrix::symmetric_part_of(K);
+  mu *= kShiftDecay;
+  if (mu < kSmallestShift) {
+    mu = 0;
+    const CholeskyStatus status = cholesky_solve(S, g, dq);
+    if (status != CholeskyStatus::NotPositiveDefinite) return status == CholeskyStatus::Solved;
+    mu = kFirstShift;
+  }
+  Eigen::VectorXd d = S.matrix().diagonal().cwiseAbs();
+  d = d.cwiseMax(1e-12 * d.maxCoeff());
+  for (int k = 0; k < kMaxShifts; ++k, mu *= kShiftGrowth) {
+    const CholeskyStatus status = cholesky_solve(S.plus_diagonal(mu * d), g, dq);
+    if (status != CholeskyStatus::NotPositiveDefinite) return status == CholeskyStatus::Solved;
+  }
+  return false;
 }
 
 // A Newton solve that has not reduced the residual by this factor after `stall_iteration`
@@ -91,6 +119,8 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
   jac.with_velocity = false;  // statics needs d(force)/d(pose) only
   const double L = std::max(model.sheet.length, 1e-3);
   double r_start = 0;
+  double mu = 0;  // Levenberg-Marquardt shift of the last step
+  const bool conservative = conservative_stiffness(model);
   for (int it = 0; it < settings.max_iterations; ++it) {
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
@@ -102,9 +132,14 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     if (it == 0) r_start = r0;
     if (stall_iteration > 0 && it >= stall_iteration && r0 > kStallDrop * r_start) return false;
     const Eigen::VectorXd g = generalized_forces(model, f);
-    const Eigen::SparseMatrix<double> K = newton_matrix(model, -jac.dq);
     Eigen::VectorXd dq;
-    if (!sparse_solve(K, g, dq)) {
+    // The first iteration's matrix is that of the start (an equilibrium, or the initial
+    // state): not positive definite there means a mechanism (singular), reported below, or a
+    // structure past a limit point, which L D L^T takes; shifts are for the iterates between.
+    const bool solved = conservative && it > 0
+                            ? shifted_newton_step(-jac.dq, g, dq, mu)
+                            : solve_newton_system(model, -jac.dq, g, dq, nullptr);
+    if (!solved) {
       // Slipping contact points carry a constant force: a part held only by friction
       // beyond its friction cone has no stiffness left along the slip.
       const bool friction = model.contact.enabled && model.contact.friction != FrictionModel::None;
@@ -205,7 +240,7 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
     ++stats.newton_iterations;
     const Eigen::VectorXd res = generalized_forces(model, f) - M_h * (moved - h * v);
     Eigen::VectorXd dq;
-    if (!res.allFinite() || !sparse_solve(newton_matrix(model, M_h - jac.dq), res, dq) ||
+    if (!res.allFinite() || !solve_newton_system(model, M_h - jac.dq, res, dq, nullptr) ||
         !dq.allFinite()) {
       return false;
     }

@@ -49,7 +49,12 @@ bool solve_translations(const Model& model, State& state, BodyForces& f, SolverS
   for (int i = 0; i < model.num_dofs; ++i) {
     if (pos[static_cast<std::size_t>(i)] >= 0) g_t[pos[static_cast<std::size_t>(i)]] = g[i];
   }
-  if (!sparse_solve(K_tt, g_t, dp) || !dp.allFinite()) return false;
+  // A conservative model's translation block is symmetric (the skew part of its stiffness is
+  // in the rotation blocks only, elements/assemble.hpp): straight to CHOLMOD.
+  const bool solved = conservative_stiffness(model)
+                          ? sparse_solve(SymmetricMatrix::symmetric_part_of(K_tt), g_t, dp)
+                          : sparse_solve(K_tt, g_t, dp);
+  if (!solved || !dp.allFinite()) return false;
   Eigen::VectorXd dq = Eigen::VectorXd::Zero(model.num_dofs);
   for (int i = 0; i < model.num_dofs; ++i) {
     if (pos[static_cast<std::size_t>(i)] >= 0) dq[i] = dp[pos[static_cast<std::size_t>(i)]];
