@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -17,6 +18,7 @@
 #include "elements/crease_laws/series.hpp"
 #include "elements/crease_laws/shifted.hpp"
 #include "generators/plate_cell_fit.hpp"
+#include "generators/plate_hessian.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/segment_mesh.hpp"
 
@@ -47,6 +49,9 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
   if (s.bending_rigidity) require_positive(*s.bending_rigidity, src, "bending_rigidity", "N m");
+  if (s.hessian_bending && !p.seams.empty()) {
+    throw InputError(src, "finseg:seams", "hessian bending does not support seams yet");
+  }
   if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
     throw InputError(src, "finseg:seams",
                      "a seam joins edges that lie apart on the flat sheet: the pattern must "
@@ -220,6 +225,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   }
 
   std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
+  std::vector<int> link_element;
   for (const CellLink& l : mesh.links) {
     const BodyDef &L = m.bodies[l.left], &R = m.bodies[l.right];
     // Each cell's own copy of the side (two copies across a seam, else the same side).
@@ -277,11 +283,25 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     }
     add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m,
                    spec.crease_bending_in_series, cell_sides);
+    link_element.push_back(static_cast<int>(m.elements.size()));
     m.elements.push_back(e);
   }
   const double D =
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
+  if (spec.hessian_bending) {
+    const char* beta = std::getenv("FINSEG_BETA");
+    m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio, beta ? std::atof(beta) : 1.0);
+    for (ElementDef& e : m.elements) {
+      if (e.crease >= 0) {
+        if (std::getenv("FINSEG_NOTWIST") && (m.bodies[e.inner].fixed || m.bodies[e.outer].fixed)) e.K[3] = e.C[3] = 0;
+        continue;
+      }
+      e.K[3] = e.K[4] = e.C[3] = e.C[4] = 0;  // the cells' energy holds the bending
+    }
+    m.finalize_dofs();
+    return m;
+  }
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
     m.plate_cells.push_back(plate_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),
