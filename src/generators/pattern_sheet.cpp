@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 
 #include "core/error.hpp"
 #include "core/text.hpp"
@@ -290,14 +289,13 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
   if (spec.hessian_bending) {
-    const char* beta = std::getenv("FINSEG_BETA");
-    m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio, beta ? std::atof(beta) : 1.0);
+    m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio);
     for (ElementDef& e : m.elements) {
-      if (e.crease >= 0) {
-        if (std::getenv("FINSEG_NOTWIST") && (m.bodies[e.inner].fixed || m.bodies[e.outer].fixed)) e.K[3] = e.C[3] = 0;
-        continue;
-      }
-      e.K[3] = e.K[4] = e.C[3] = e.C[4] = 0;  // the cells' energy holds the bending
+      // The cells' energy holds the plate's bending and twist, the slope along a supported
+      // side included (a hinge to a fixed cell); a crease between free cells keeps its twist.
+      const bool support = m.bodies[e.inner].fixed || m.bodies[e.outer].fixed;
+      if (e.crease < 0 || support) e.K[3] = e.C[3] = 0;
+      if (e.crease < 0) e.K[4] = e.C[4] = 0;
     }
     m.finalize_dofs();
     return m;

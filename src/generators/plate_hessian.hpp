@@ -15,8 +15,9 @@ namespace finseg {
 /// neighbours. `link_element[k]` is the element on mesh.links[k]; `weight` of an element is the
 /// rotational stiffness its side would have as a plate joint (D l / h, N m), read from K[4] of
 /// `elements` (which must still hold it). No seams (the cells' material axes must coincide).
+/// `stabilisation`: weight of the fit residuals against the joints' stiffness (see the doc).
 std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Model& model,
                                               const std::vector<int>& link_element, double D,
-                                              double nu, double stabilisation = 1.0);
+                                              double nu, double stabilisation = 0.1);
 
 }  // namespace finseg
