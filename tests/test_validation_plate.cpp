@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <memory>
 
 #include "cli_test_util.hpp"
@@ -60,7 +59,6 @@ PlateResult square_plate(EdgeAssignment support, int n) {
   spec.poisson_ratio = kNu;
   spec.density = kRho;
   spec.subdivisions = n;
-  spec.hessian_bending = std::getenv("FINSEG_HESS") != nullptr;
   spec.fixed_faces = {1, 2, 3, 4};
   spec.mountain_law = std::make_shared<LinearCreaseLaw>(0.0, 0.0);  // a hinge
   Model m = build_pattern_model(framed_square(support), spec);
@@ -90,7 +88,6 @@ void expect_converges(EdgeAssignment support, double alpha, std::vector<int> ns)
     const PlateResult r = square_plate(support, n);
     ASSERT_EQ(r.status, "ok") << n;
     const double err = std::abs(r.alpha / alpha - 1);
-    if (std::getenv("FINSEG_PRINT")) fmt::print("n {} err {:+.4f} %\n", n, 100 * (r.alpha / alpha - 1));
     EXPECT_LT(err, 0.7 * last) << "n = " << n << ": alpha " << r.alpha;
     last = err;
     ::testing::Test::RecordProperty(fmt::format("n{}_rel_error", n), fmt::format("{:.3e}", err));

@@ -72,8 +72,8 @@ struct Built {
   std::vector<int> depth;  // cells from the boundary: 0 on it
 };
 
-Built build(bool fan) {
-  const CreasePattern p = jittered_triangulation(8, fan);
+Built build(bool fan, int n) {
+  const CreasePattern p = jittered_triangulation(n, fan);
   PatternSheetSpec spec;
   spec.thickness = kT;
   spec.youngs_modulus = kE;
@@ -132,7 +132,7 @@ Eigen::VectorXd cell_thetas(const Built& b, const PlateCellDef& cell, const std:
 class PlateHessian : public ::testing::TestWithParam<bool> {};
 
 TEST_P(PlateHessian, QuadraticDeflectionIsExactAndInEquilibriumAwayFromTheBoundary) {
-  const Built b = build(GetParam());
+  const Built b = build(GetParam(), 8);
   Mat3 C;
   C << 1, kNu, 0, kNu, 1, 0, 0, 0, 2 * (1 - kNu);
   for (const Mat2& K : {sym2(1, 0, 0), sym2(0, 1, 0), sym2(0, 0, 1), sym2(0.7, 1.3, -0.4)}) {
@@ -171,7 +171,7 @@ TEST_P(PlateHessian, QuadraticDeflectionIsExactAndInEquilibriumAwayFromTheBounda
 }
 
 TEST_P(PlateHessian, OnlyUniformTiltsAreFreeOfEnergy) {
-  const Built b = build(GetParam());
+  const Built b = build(GetParam(), 5);
   const int n = static_cast<int>(b.mesh.cells.size());
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(2 * n, 2 * n);  // energy in the cells' slopes
   for (const PlateCellDef& cell : b.model.plate_cells) {
