@@ -80,15 +80,15 @@ Built build(bool fan, int n) {
   spec.poisson_ratio = kNu;
   spec.hessian_bending = true;
   Built b{build_pattern_model(p, spec), subdivide_pattern(p, 1), {}};
-  const int n = static_cast<int>(b.mesh.cells.size());
-  std::vector<std::vector<int>> nb(n);
+  const int cells = static_cast<int>(b.mesh.cells.size());
+  std::vector<std::vector<int>> nb(cells);
   for (const CellLink& l : b.mesh.links) {
     nb[l.left].push_back(l.right);
     nb[l.right].push_back(l.left);
   }
-  b.depth.assign(n, -1);
+  b.depth.assign(cells, -1);
   std::deque<int> queue;
-  for (int c = 0; c < n; ++c) {
+  for (int c = 0; c < cells; ++c) {
     if (nb[c].size() < b.mesh.cells[c].size()) b.depth[c] = 0, queue.push_back(c);
   }
   while (!queue.empty()) {
