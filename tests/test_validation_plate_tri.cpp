@@ -178,5 +178,39 @@ TEST(PlateTriangles, ClampedSquarePlateSplitIntoFans) {
   expect_converges(Split::Fan, {2, 3, 5, 9}, EdgeAssignment::Join);
 }
 
+// PatternSheetSpec::hessian_bending unset: the cell Hessian where some cell is a triangle, the
+// joints and corrections on quadrilaterals (bit for bit what each gives when asked for).
+TEST(PlateTriangles, DefaultBendingIsTheHessianOnTrianglesAndTheCorrectionsOnQuadrilaterals) {
+  const TriPlate tri = triangulated_square(3, Split::Diagonal, EdgeAssignment::Mountain);
+  CreasePattern quads = tri.pattern;  // the same frame around 3 x 3 squares
+  quads.faces.erase(quads.faces.begin(), quads.faces.begin() + tri.plate_faces);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      const int v = 4 * j + i;
+      quads.faces.insert(quads.faces.begin(), {v, v + 1, v + 5, v + 4});
+    }
+  }
+  quads.edges = edges_from_faces(quads.faces);
+  derive_edge_faces(quads, "<quad plate>");
+  for (const CreasePattern* p : {&tri.pattern, static_cast<const CreasePattern*>(&quads)}) {
+    PatternSheetSpec spec;
+    spec.mountain_law = std::make_shared<LinearCreaseLaw>(0.0, 0.0);
+    const Model by_default = build_pattern_model(*p, spec);
+    spec.hessian_bending = p == &tri.pattern;
+    const Model asked = build_pattern_model(*p, spec);
+    spec.hessian_bending = !*spec.hessian_bending;
+    const Model other = build_pattern_model(*p, spec);
+    ASSERT_EQ(by_default.plate_cells.size(), asked.plate_cells.size());
+    for (std::size_t c = 0; c < asked.plate_cells.size(); ++c) {
+      EXPECT_EQ(by_default.plate_cells[c].Q, asked.plate_cells[c].Q);
+    }
+    for (std::size_t e = 0; e < asked.elements.size(); ++e) {
+      EXPECT_EQ(by_default.elements[e].K, asked.elements[e].K);
+    }
+    // The two methods differ: the plate joints' bending springs are the Hessian's to hold.
+    EXPECT_NE(other.elements[0].K[4], asked.elements[0].K[4]);
+  }
+}
+
 }  // namespace
 }  // namespace finseg

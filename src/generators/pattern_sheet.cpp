@@ -48,8 +48,10 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
   if (s.bending_rigidity) require_positive(*s.bending_rigidity, src, "bending_rigidity", "N m");
-  if (s.hessian_bending && !p.seams.empty()) {
-    throw InputError(src, "finseg:seams", "hessian bending does not support seams yet");
+  if (s.hessian_bending.value_or(false) && !p.seams.empty()) {
+    throw InputError(src, "finseg:seams",
+                     "the consistent cell Hessian bending (hessian_bending) does not support "
+                     "seams yet");
   }
   if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
     throw InputError(src, "finseg:seams",
@@ -173,6 +175,16 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
   }
 }
 
+// PatternSheetSpec::hessian_bending, unset: on where the joints and corrections do not converge
+// (triangles), off on quadrilaterals (where they are more accurate) and with seams.
+bool uses_hessian_bending(const PatternSheetSpec& s, const CreasePattern& p,
+                          const SegmentMesh& mesh) {
+  if (s.hessian_bending) return *s.hessian_bending;
+  if (!p.seams.empty()) return false;
+  return std::any_of(mesh.cells.begin(), mesh.cells.end(),
+                     [](const std::vector<int>& c) { return c.size() == 3; });
+}
+
 }  // namespace
 
 Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
@@ -288,7 +300,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   const double D =
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
-  if (spec.hessian_bending) {
+  if (uses_hessian_bending(spec, p, mesh)) {
     m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio);
     for (ElementDef& e : m.elements) {
       // The cells' energy holds the plate's bending and twist, the slope along a supported
