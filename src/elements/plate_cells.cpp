@@ -1,5 +1,6 @@
 #include "elements/plate_cells.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "core/so3.hpp"
@@ -25,6 +26,7 @@ SideRotation side_rotation(const ElementDef& e, const State& s) {
 
 void add_plate_cells(const Model& model, const State& state, Assembler& as) {
   std::vector<SideRotation> rot;
+  std::vector<int> bodies;  // the cell's bodies, in first-seen order
   for (const PlateCellDef& cell : model.plate_cells) {
     const int n = static_cast<int>(cell.sides.size());
     rot.clear();
@@ -47,18 +49,30 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
       as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
     }
     if (!as.want_jacobian()) continue;
+    // d tau / d phi = -T^T Q T over the bodies the sides join, dTheta = T dphi (+ on a side's
+    // inner body, - on its outer): one block per pair of bodies.
+    bodies.clear();
+    auto local = [&bodies](int b) {
+      const auto it = std::find(bodies.begin(), bodies.end(), b);
+      if (it != bodies.end()) return static_cast<int>(it - bodies.begin());
+      bodies.push_back(b);
+      return static_cast<int>(bodies.size()) - 1;
+    };
+    for (const PlateCellSide& side : cell.sides) {
+      local(model.elements[side.element].inner);
+      local(model.elements[side.element].outer);
+    }
+    const int nb = static_cast<int>(bodies.size());
+    Eigen::MatrixXd T = Eigen::MatrixXd::Zero(2 * n, 3 * nb);
     for (int k = 0; k < n; ++k) {
-      const ElementDef& ek = model.elements[cell.sides[k].element];
-      for (int j = 0; j < n; ++j) {
-        const ElementDef& ej = model.elements[cell.sides[j].element];
-        Mat3 q = Mat3::Zero();
-        q.topLeftCorner<2, 2>() = cell.Q.block<2, 2>(2 * k, 2 * j);
-        // d tau_inner,k / d phi_inner,j.
-        const Mat3 K = -to_theta[k].transpose() * q * to_theta[j];
-        as.add_rotation_block(ek.inner, ej.inner, K);
-        as.add_rotation_block(ek.inner, ej.outer, -K);
-        as.add_rotation_block(ek.outer, ej.inner, -K);
-        as.add_rotation_block(ek.outer, ej.outer, K);
+      const ElementDef& e = model.elements[cell.sides[k].element];
+      T.block<2, 3>(2 * k, 3 * local(e.inner)) += to_theta[k].topRows<2>();
+      T.block<2, 3>(2 * k, 3 * local(e.outer)) -= to_theta[k].topRows<2>();
+    }
+    const Eigen::MatrixXd K = -T.transpose() * cell.Q * T;
+    for (int a = 0; a < nb; ++a) {
+      for (int b = 0; b < nb; ++b) {
+        as.add_rotation_block(bodies[a], bodies[b], K.block<3, 3>(3 * a, 3 * b));
       }
     }
   }

@@ -17,6 +17,7 @@
 #include "elements/crease_laws/series.hpp"
 #include "elements/crease_laws/shifted.hpp"
 #include "generators/plate_cell_fit.hpp"
+#include "generators/plate_hessian.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/segment_mesh.hpp"
 
@@ -75,6 +76,11 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
   if (s.bending_rigidity) require_positive(*s.bending_rigidity, src, "bending_rigidity", "N m");
+  if (s.hessian_bending.value_or(false) && !p.seams.empty()) {
+    throw InputError(src, "finseg:seams",
+                     "the consistent cell Hessian bending (hessian_bending) does not support "
+                     "seams yet");
+  }
   if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
     throw InputError(src, "finseg:seams",
                      "a seam joins edges that lie apart on the flat sheet: the pattern must "
@@ -201,6 +207,16 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
   }
 }
 
+// PatternSheetSpec::hessian_bending, unset: on where the joints and corrections do not converge
+// (triangles), off on quadrilaterals (where they are more accurate) and with seams.
+bool uses_hessian_bending(const PatternSheetSpec& s, const CreasePattern& p,
+                          const SegmentMesh& mesh) {
+  if (s.hessian_bending) return *s.hessian_bending;
+  if (!p.seams.empty()) return false;
+  return std::any_of(mesh.cells.begin(), mesh.cells.end(),
+                     [](const std::vector<int>& c) { return c.size() == 3; });
+}
+
 }  // namespace
 
 Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
@@ -221,6 +237,9 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   cut.segment_size = spec.segment_size;
   cut.crease_refinement = spec.crease_refinement;
   const SegmentMesh mesh = subdivide_pattern(p, cut);
+  const bool hessian = uses_hessian_bending(spec, p, mesh);
+  // The cell Hessian carries the sheet's bending next to a crease itself: no series spring.
+  const bool series = spec.crease_bending_in_series && !hessian;
   const bool folded = spec.start_folded && !mesh.folded_m.empty();
   Model m;
   m.source = source;
@@ -256,6 +275,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   }
 
   std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
+  std::vector<int> link_element;
   for (const CellLink& l : mesh.links) {
     const BodyDef &L = m.bodies[l.left], &R = m.bodies[l.right];
     // Each cell's own copy of the side (two copies across a seam, else the same side).
@@ -306,18 +326,30 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
         }
       }
     }
-    if (e.crease >= 0 && spec.crease_bending_in_series) {
+    if (e.crease >= 0 && series) {
       // The plate joint's bending spring (unused by the crease element) in series with the law.
       CreaseDef& c = m.creases[e.crease];
       c.law = std::make_shared<SeriesCreaseLaw>(c.law, e.K[4]);
     }
-    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m,
-                   spec.crease_bending_in_series, cell_sides);
+    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, series, cell_sides);
+    link_element.push_back(static_cast<int>(m.elements.size()));
     m.elements.push_back(e);
   }
   const double D =
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
+  if (hessian) {
+    m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio);
+    for (ElementDef& e : m.elements) {
+      // The cells' energy holds the plate's bending and twist, the slope along a supported
+      // side included (a hinge to a fixed cell); a crease between free cells keeps its twist.
+      const bool support = m.bodies[e.inner].fixed || m.bodies[e.outer].fixed;
+      if (e.crease < 0 || support) e.K[3] = e.C[3] = 0;
+      if (e.crease < 0) e.K[4] = e.C[4] = 0;
+    }
+    m.finalize_dofs();
+    return m;
+  }
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
     m.plate_cells.push_back(plate_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),

@@ -51,6 +51,12 @@ struct PatternSheetSpec {
   /// cells miss, converges at second order (docs/stiffness.md, "Creases on cell sides").
   /// False: the law alone (first order at creases; kept for comparisons).
   bool crease_bending_in_series = true;
+  /// Bending by the consistent cell Hessian (generators/plate_hessian.hpp) in place of the
+  /// plate joints' bending and twist springs and the cell corrections: it converges on
+  /// triangulated segmentations, where the corrections do not (docs/stiffness.md, "Triangular
+  /// cells"). Unset: on when some cell is a triangle and the pattern has no seams, else off.
+  /// True with seams is refused.
+  std::optional<bool> hessian_bending;
   std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
   bool start_folded = true;      ///< start from the pattern's folded coordinates if any
   double damping_time = 0;       ///< stiffness-proportional damping C = damping_time K, s
