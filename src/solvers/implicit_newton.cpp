@@ -5,6 +5,7 @@
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/linear_solve.hpp"
+#include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
 namespace {
@@ -76,7 +77,10 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
     Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
     if (symmetric) A = symmetric_part(A);
     Eigen::VectorXd dx;
-    if (!r.allFinite() || !sparse_solve(A, -r, dx)) return false;
+    if (!r.allFinite() ||
+        !solve_with_volume_stiffness(A, res.s * map.cq, volume_stiffness(model, state), -r, dx)) {
+      return false;
+    }
     x += dx;
     if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {
       place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);

@@ -14,6 +14,7 @@
 #include "solvers/linear_solve.hpp"
 #include "solvers/step_limits.hpp"
 #include "solvers/translation_solve.hpp"
+#include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
 namespace {
@@ -104,7 +105,7 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     const Eigen::VectorXd g = generalized_forces(model, f);
     const Eigen::SparseMatrix<double> K = newton_matrix(model, -jac.dq);
     Eigen::VectorXd dq;
-    if (!sparse_solve(K, g, dq)) {
+    if (!solve_with_volume_stiffness(K, 1.0, volume_stiffness(model, state), g, dq)) {
       // Slipping contact points carry a constant force: a part held only by friction
       // beyond its friction cone has no stiffness left along the slip.
       const bool friction = model.contact.enabled && model.contact.friction != FrictionModel::None;
@@ -205,7 +206,9 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
     ++stats.newton_iterations;
     const Eigen::VectorXd res = generalized_forces(model, f) - M_h * (moved - h * v);
     Eigen::VectorXd dq;
-    if (!res.allFinite() || !sparse_solve(newton_matrix(model, M_h - jac.dq), res, dq) ||
+    if (!res.allFinite() ||
+        !solve_with_volume_stiffness(newton_matrix(model, M_h - jac.dq), 1.0,
+                                     volume_stiffness(model, state), res, dq) ||
         !dq.allFinite()) {
       return false;
     }
