@@ -129,6 +129,15 @@ class Assembler {
     jac_->dq_blocks.add(ra, cb, block);
   }
 
+  /// Adds d(wrench on body a)/d(pose of body b) (forces and couples by translations and
+  /// world-frame rotations, as the Jacobian's blocks) to the Jacobian (no-op when either body
+  /// is fixed or no Jacobian is wanted).
+  void add_pose_block(int a, int b, const Mat6& block) {
+    const int ra = model_.dof_of_body[a], cb = model_.dof_of_body[b];
+    if (!jac_ || ra < 0 || cb < 0) return;
+    jac_->dq_blocks.add(ra, cb, block);
+  }
+
   /// Adds potential energy that has no force of its own (bookkeeping).
   void add_energy(double e) { out_.potential_energy += e; }
 

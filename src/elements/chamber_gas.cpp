@@ -124,6 +124,25 @@ ChamberGas gas_after(const ChamberDef& def, const ChamberGas& last, double t, do
   return g;
 }
 
+double gas_pressure_slope(const ChamberDef& def, const ChamberGas& last, double t, double volume,
+                          double load_scale, bool quasi_static) {
+  if (def.gas == GasModel::Prescribed) return 0;
+  const ChamberGas g = gas_after(def, last, t, volume, load_scale, quasi_static);
+  // The mass does not follow the trial volume (inflow integrated, vents at `last`): an
+  // isothermal or quasi-static gas has p = m R T / V.
+  if (quasi_static || def.gas == GasModel::Isothermal) return -g.pressure / volume;
+  // Adiabatic: U = rhs / den with rhs = U0 - p_last (V - V_last) / 2 and
+  // den = 1 + (gamma - 1) (V - V_last) / (2 V); p = (gamma - 1) U / V.
+  if (g.energy <= 0) return 0;  // clamped at an empty chamber
+  const double dV = volume - last.volume;
+  const double den = 1 + 0.5 * (def.gamma - 1) * dV / volume;
+  const double rhs = g.energy * den;
+  const double d_rhs = -0.5 * last.pressure;
+  const double d_den = 0.5 * (def.gamma - 1) * last.volume / (volume * volume);
+  const double dU = (d_rhs * den - rhs * d_den) / (den * den);
+  return (def.gamma - 1) * (dU * volume - g.energy) / (volume * volume);
+}
+
 void add_chamber_pressures(const Model& model, const State& state, Assembler& as) {
   for (std::size_t c = 0; c < model.chambers.size(); ++c) {
     const ChamberDef& def = model.chambers[c];

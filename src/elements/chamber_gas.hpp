@@ -27,7 +27,13 @@ double chamber_volume_now(const Model& model, const State& state, int c);
 ChamberGas gas_after(const ChamberDef& def, const ChamberGas& last, double t, double volume,
                      double load_scale, bool quasi_static);
 
-/// Adds every chamber's pressure forces p dV/dq (no Jacobian: docs/gas.md).
+/// dp/dV of gas_after at the same arguments, Pa/m^3: the gas's stiffness against a change of
+/// the trial volume (0 for a prescribed pressure).
+double gas_pressure_slope(const ChamberDef& def, const ChamberGas& last, double t, double volume,
+                          double load_scale, bool quasi_static);
+
+/// Adds every chamber's pressure forces p dV/dq, with their Jacobian at fixed p when wanted
+/// (the dependence of p on V is the solvers': solvers/volume_stiffness.hpp).
 void add_chamber_pressures(const Model& model, const State& state, Assembler& as);
 
 /// Advances State::chambers to the state's time and poses (after an accepted step).

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "core/so3.hpp"
 #include "elements/assembler.hpp"
 #include "elements/chamber_volume.hpp"
 
@@ -162,6 +163,65 @@ void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
   def.loops.insert(def.loops.end(), bridges.begin(), bridges.end());
 }
 
+namespace {
+
+// d(x of vertex v)/d(pose of its body): [I, -[r]x] for the lever r = x - p_W (world-frame
+// rotation increments); zero for a fixed point.
+Eigen::Matrix<double, 3, 6> vertex_motion(const Vec3& r) {
+  Eigen::Matrix<double, 3, 6> J;
+  J.leftCols<3>() = Mat3::Identity();
+  J.rightCols<3>() = -hat<double>(r);
+  return J;
+}
+
+// p d2V/dq2 of the fanned loops. The Hessian of a triangle's volume x_a . (x_b x x_c) / 6 in
+// its vertices has the blocks d g_a / d x_b = -[x_c]x / 6, d g_a / d x_c = [x_b]x / 6 (and
+// cyclically); chained to the bodies' poses, the force rows of vertex a take
+// H_ab J_b and its couple rows [r_a]x H_ab J_b, and turning a body turns its levers:
+// d(r x g)/dphi = [g]x [r]x on its own rotation block.
+void add_surface_pressure_jacobian(const State& state, const ChamberDef& def, double p,
+                                   const std::vector<Vec3>& g, Assembler& as) {
+  const std::size_t n = def.vertices.size();
+  std::vector<Vec3> x(n), r(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = vertex_W(state, def.vertices[i]);
+    const int b = def.vertices[i].body;
+    r[i] = b < 0 ? Vec3::Zero() : Vec3(state.R_WB[b] * def.vertices[i].x);
+  }
+  // Rows of vertex a's wrench per unit force on it: [I; [r_a]x].
+  const auto wrench_rows = [&](int a) {
+    Eigen::Matrix<double, 6, 3> W;
+    W.topRows<3>() = Mat3::Identity();
+    W.bottomRows<3>() = hat<double>(r[a]);
+    return W;
+  };
+  const auto add_pair = [&](int a, int b, const Mat3& H) {
+    const int ba = def.vertices[a].body, bb = def.vertices[b].body;
+    if (ba < 0 || bb < 0) return;
+    const Mat6 block = wrench_rows(a) * (p * H) * vertex_motion(r[b]);
+    as.add_pose_block(ba, bb, block);
+  };
+  for (const auto& loop : def.loops) {
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      const int t[3] = {loop[0], loop[k], loop[k + 1]};
+      for (int m = 0; m < 3; ++m) {
+        const int a = t[m], b = t[(m + 1) % 3], c = t[(m + 2) % 3];
+        add_pair(a, b, -hat<double>(x[c]) / 6);
+        add_pair(a, c, hat<double>(x[b]) / 6);
+      }
+    }
+  }
+  for (std::size_t a = 0; a < n; ++a) {
+    const int b = def.vertices[a].body;
+    if (b < 0) continue;
+    Mat6 block = Mat6::Zero();
+    block.bottomRightCorner<3, 3>() = hat<double>(Vec3(p * g[a])) * hat<double>(r[a]);
+    as.add_pose_block(b, b, block);
+  }
+}
+
+}  // namespace
+
 double surface_volume(const State& state, const ChamberDef& def, std::vector<Vec3>* gradient) {
   std::vector<Vec3> x(def.vertices.size());
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = vertex_W(state, def.vertices[i]);
@@ -193,6 +253,7 @@ void add_surface_pressure(const State& state, const ChamberDef& def, double p, A
     w.tau_W = (state.R_WB[v.body] * v.x).cross(w.f_W);
     as.add(v.body, w);
   }
+  if (as.want_jacobian() && p != 0) add_surface_pressure_jacobian(state, def, p, g, as);
 }
 
 }  // namespace finseg

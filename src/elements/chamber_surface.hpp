@@ -27,7 +27,9 @@ double surface_volume(const State& state, const ChamberDef& def,
 
 /// Adds the generalized force p dV/dq of pressure p (Pa) on the bodies: each corner takes
 /// p dV/dx, with its moment about the body's centroid (on a face's rectangle this sums to
-/// p A n at the centroid). Plain wrenches: no Jacobian (docs/gas.md says why).
+/// p A n at the centroid); when the assembler wants a Jacobian, also its derivative at fixed
+/// p, p d2V/dq2 (the faces turning and moving apart under the pressure: a follower load).
+/// The dependence of p on V is the solvers' (a rank-one term, docs/gas.md).
 void add_surface_pressure(const State& state, const ChamberDef& def, double p, Assembler& as);
 
 }  // namespace finseg

@@ -5,6 +5,7 @@
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/linear_solve.hpp"
+#include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
 namespace {
@@ -77,7 +78,8 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
     Eigen::VectorXd dx;
     if (!r.allFinite()) return false;
     const bool solved = symmetric ? sparse_solve(SymmetricMatrix::symmetric_part_of(A), -r, dx)
-                                  : sparse_solve(A, -r, dx);
+                                  : solve_with_volume_stiffness(
+                                        A, res.s * map.cq, volume_stiffness(model, state), -r, dx);
     if (!solved) return false;
     x += dx;
     if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {

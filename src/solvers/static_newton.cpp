@@ -14,6 +14,7 @@
 #include "solvers/linear_solve.hpp"
 #include "solvers/step_limits.hpp"
 #include "solvers/translation_solve.hpp"
+#include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
 namespace {
@@ -72,10 +73,15 @@ double dead_moment_work(const Model& model, const State& state, const Eigen::Vec
 // torque (elements/assemble.hpp): its symmetric part is the Hessian of the energy in the
 // exponential chart at the current poses, so Newton on it converges quadratically, and it goes
 // to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
-bool solve_newton_system(const Model& model, const Eigen::SparseMatrix<double>& K,
-                         const Eigen::VectorXd& g, Eigen::VectorXd& dq, LinearSolveInfo* info) {
-  if (!conservative_stiffness(model)) return sparse_solve(K, g, dq, info);
-  return sparse_solve(SymmetricMatrix::symmetric_part_of(K), g, dq, info);
+// Gas in chambers (not conservative here) adds its stiffness against volume changes
+// (solvers/volume_stiffness.hpp).
+bool solve_newton_system(const Model& model, const State& state,
+                         const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& g,
+                         Eigen::VectorXd& dq) {
+  if (!conservative_stiffness(model)) {
+    return solve_with_volume_stiffness(K, 1.0, volume_stiffness(model, state), g, dq);
+  }
+  return sparse_solve(SymmetricMatrix::symmetric_part_of(K), g, dq);
 }
 
 // Levenberg-Marquardt shift of an indefinite Newton matrix: K + mu diag(|K_ii|) is factored
@@ -136,9 +142,8 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     // The first iteration's matrix is that of the start (an equilibrium, or the initial
     // state): not positive definite there means a mechanism (singular), reported below, or a
     // structure past a limit point, which L D L^T takes; shifts are for the iterates between.
-    const bool solved = conservative && it > 0
-                            ? shifted_newton_step(-jac.dq, g, dq, mu)
-                            : solve_newton_system(model, -jac.dq, g, dq, nullptr);
+    const bool solved = conservative && it > 0 ? shifted_newton_step(-jac.dq, g, dq, mu)
+                                               : solve_newton_system(model, state, -jac.dq, g, dq);
     if (!solved) {
       // Slipping contact points carry a constant force: a part held only by friction
       // beyond its friction cone has no stiffness left along the slip.
@@ -240,7 +245,7 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
     ++stats.newton_iterations;
     const Eigen::VectorXd res = generalized_forces(model, f) - M_h * (moved - h * v);
     Eigen::VectorXd dq;
-    if (!res.allFinite() || !solve_newton_system(model, M_h - jac.dq, res, dq, nullptr) ||
+    if (!res.allFinite() || !solve_newton_system(model, state, M_h - jac.dq, res, dq) ||
         !dq.allFinite()) {
       return false;
     }

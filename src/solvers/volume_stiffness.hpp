@@ -1,0 +1,31 @@
+// The gas's stiffness against volume changes in Newton's matrix. A chamber whose pressure
+// follows its volume adds -(dp/dV) a a^T to the stiffness -dF/dq, a = dV/dq (generalized: the
+// pressure forces per pascal). Dense over the chamber's faces, it is kept out of the sparse
+// matrix and added by the Sherman-Morrison-Woodbury formula (docs/gas.md, "Newton").
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "model/model.hpp"
+#include "model/state.hpp"
+
+namespace finseg {
+
+/// One rank-one term per chamber whose pressure depends on its volume.
+struct VolumeStiffness {
+  std::vector<Eigen::VectorXd> a;  ///< dV/dq: m^2 on translations, m^3 on rotations
+  std::vector<double> k;           ///< -dp/dV, Pa/m^3
+  bool empty() const { return a.empty(); }
+};
+
+/// The terms at `state` (its trial poses, its time and its chambers' last records).
+VolumeStiffness volume_stiffness(const Model& model, const State& state);
+
+/// Solves (A + s sum_k k_k a_k a_k^T) x = b with sparse_solve on A (for b and each a_k);
+/// false where sparse_solve fails or the small capacitance system is singular.
+bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
+                                 const VolumeStiffness& terms, const Eigen::VectorXd& b,
+                                 Eigen::VectorXd& x);
+
+}  // namespace finseg
