@@ -1,8 +1,10 @@
 // The gathered cone (`cone_gathered`, `finseg gen cone --gathered F`) as a start state with
 // contact on: no pair of segments that the contact rules let touch starts closer than the sum
 // of their half thicknesses (the exact distance between their mid-surface polygons, not the
-// contact's samples), so no contact force acts at the start; and the fan stack, whose
-// facets coincide, fails the same check (the reason it cannot start with contact on).
+// contact's samples), so no contact force acts at the start; the fan stack, whose facets
+// coincide, fails the same check (the reason it cannot start with contact on); and the
+// shipped examples/cone/gathered.yaml and inflate.yaml are such starts, with the contact
+// stiffness of the generator's rule (docs/folding.md, "Contact stiffness").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +20,8 @@
 #include "model/state.hpp"
 #include "patterns/cone_pattern.hpp"
 #include "patterns/pattern_checks.hpp"
+#include "scene/scene_reader.hpp"
+#include "test_paths.hpp"
 
 namespace finseg {
 namespace {
@@ -168,6 +172,28 @@ TEST(ConeGathered, TheFanStacksFacetsCoincide) {
   // Stacked facets lie on one another: a whole thickness into each other.
   EXPECT_NEAR(g.gap, -1e-4, 1e-9);
   EXPECT_GT(contact_summary(m, initial_state(m)).active, 0);
+}
+
+TEST(ConeGathered, ExampleScenesStartApartWithTheRulesContactStiffness) {
+  for (const char* file : {"gathered.yaml", "inflate.yaml"}) {
+    SCOPED_TRACE(file);
+    const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
+    const Model& m = scene.model;
+    ASSERT_TRUE(m.contact.enabled);
+    EXPECT_GE(least_gap(m).gap, 0);
+    EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
+    // One face carrying the reference force sinks a quarter of the thickness: F = K (t/4)^1.5
+    // with F the gauge's largest pull, stiffness x travel, of the pull scene.
+    const double t = m.bodies.front().thickness;
+    const Scene pull = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/gathered.yaml");
+    ASSERT_EQ(pull.model.drives.size(), 1u);
+    const double force = pull.model.drives[0].stiffness * pull.model.drives[0].travel;
+    EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * t, 1.5), force, 1e-3 * force);
+  }
+  // The inflation's chamber closes (read_scene refuses an open one) round the whole wall.
+  const Scene gas = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/inflate.yaml");
+  ASSERT_EQ(gas.model.chambers.size(), 1u);
+  EXPECT_TRUE(gas.model.drives.empty());
 }
 
 }  // namespace

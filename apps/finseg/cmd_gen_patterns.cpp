@@ -335,7 +335,7 @@ void register_cone(CLI::App* gen) {
         "axial folds,\n"
         "# top {}, base {}.\n"
         "{}"
-        "title: folded cone pulled open by its top\n{}"
+        "title: {}\n{}"
         "fixtures: {{panels: [{}]}}   # {}\n"
         "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
         "thickness\n"
@@ -355,7 +355,10 @@ void register_cone(CLI::App* gen) {
         "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01}}\n"
         "outputs: {{vtk: true, html: true, plot: true}}\n",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
-        ends->second, how_to_run, sheet_sections(*o, fold_file), clamped + 1,
+        ends->second, how_to_run,
+        from_gathered ? "gathered cone, a base facet pulled back out"
+                      : "folded cone pulled open by its top",
+        sheet_sections(*o, fold_file), clamped + 1,
         from_stack || from_gathered ? "one face of the top band"
         : s->base_disc              ? "the base disc's hub"
                                     : "one face of the base band",
