@@ -271,7 +271,6 @@ void register_cone(CLI::App* gen) {
       throw InputError("<cli>", "--gathered", fmt::format("{}; allowed [0, 1)", *gathered));
     }
     if (*inflate && !from_gathered) throw InputError("<cli>", "--inflate", "needs --gathered");
-    if (*inflate && !from_gathered) throw InputError("<cli>", "--inflate", "needs --gathered");
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
@@ -368,6 +367,14 @@ void register_cone(CLI::App* gen) {
       write_pair(*o, p, yaml);
       return;
     }
+    // The inflator's air fills the deployed faceted frustum to 1 kPa at 300 K, injected over
+    // 60 ms (ramps of 10 ms at both ends).
+    const int G = 2 * s->pleats;
+    const double polygon = 0.5 * G * std::sin(2 * kPi / G),
+                 A_base = polygon * s->base_radius * s->base_radius,
+                 A_top = polygon * s->top_radius * s->top_radius;
+    const double volume = s->height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
+    const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
     const std::string gas_yaml = fmt::format(
         "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
         "axial folds,\n"
@@ -387,7 +394,8 @@ void register_cone(CLI::App* gen) {
         "      - {{bodies: all, outward: {}}}\n"
         "    end_plates:\n{}{}"
         "    gas: adiabatic\n"
-        "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, 6.0e-4, 6.0e-4, 0],\n"
+        "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
+        "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
         "             temperature: [300, 300, 300, 300]}}\n"
         "    vents:\n"
         "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n"
@@ -399,7 +407,8 @@ void register_cone(CLI::App* gen) {
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, *gathered, scene_name,
         sheet_sections(*o, fold_file), clamped + 1, most_force, contact_stiffness, "+z",
         end_plates(*s, p.vertices_folded_m, 0, true),
-        end_plates(*s, p.vertices_folded_m, s->axial_folds + 1, false));
+        end_plates(*s, p.vertices_folded_m, s->axial_folds + 1, false), air_kg, volume, peak_flow,
+        peak_flow);
     write_pair(*o, p, gas_yaml);
   });
 }
