@@ -121,14 +121,19 @@ GapResult least_gap(const Model& m) {
   return r;
 }
 
-// The lab cone of examples/cone (6 pleats, 2 axial folds, open ends) on 0.1 mm paper with
-// contact on, started from `folded` (vertices of the pattern), each face cut n x n.
-Model cone_model(const std::vector<Vec3>& folded, int n) {
+// The cone of examples/cone: 6 pleats, 2 axial folds, open ends.
+ConeSpec lab_cone() {
   ConeSpec s;
   s.pleats = 6;
   s.axial_folds = 2;
   s.top_disc = s.base_disc = false;
-  CreasePattern p = cone_crease_pattern(s);
+  return s;
+}
+
+// That cone on 0.1 mm paper with contact on, started from `folded` (vertices of the
+// pattern), each face cut n x n.
+Model cone_model(const std::vector<Vec3>& folded, int n) {
+  CreasePattern p = cone_crease_pattern(lab_cone());
   p.vertices_folded_m = folded;
   validate_pattern(p, "<cone>");
   PatternSheetSpec spec;
@@ -140,14 +145,6 @@ Model cone_model(const std::vector<Vec3>& folded, int n) {
   m.contact.enabled = true;
   m.contact.stiffness = 8e6;
   return m;
-}
-
-ConeSpec lab_cone() {
-  ConeSpec s;
-  s.pleats = 6;
-  s.axial_folds = 2;
-  s.top_disc = s.base_disc = false;
-  return s;
 }
 
 TEST(ConeGathered, NoPairStartsInContact) {
