@@ -93,6 +93,28 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   r = run_finseg(dir, "inspect st.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  // Gathered (open ends only), pulled or inflated: the scenes read back (the chamber closes).
+  for (const char* extra : {"", " --inflate"}) {
+    r = run_finseg(dir,
+                   std::string("gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                               "--base open --gathered 0.8 --out ga.yaml") +
+                       extra);
+    ASSERT_EQ(r.code, 0) << r.err;
+    r = run_finseg(dir, "inspect ga.yaml");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  }
+  for (const char* bad : {"--gathered 0.5", "--top open --base open --gathered 1",
+                          "--top open --base open "
+                          "--gathered -0.1",
+                          "--top open --base open --gathered 0.5 --stowed 150"}) {
+    r = run_finseg(dir, std::string("gen cone ") + bad + " --out l.yaml");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--gathered"), std::string::npos) << r.err;
+  }
+  r = run_finseg(dir, "gen cone --top open --base open --inflate --out l.yaml");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--inflate"), std::string::npos) << r.err;
   for (const char* bad : {"--stowed 150", "--top open --base open --stowed 181"}) {
     r = run_finseg(dir, std::string("gen cone ") + bad + " --out l.yaml");
     EXPECT_EQ(r.code, 2) << bad;

@@ -2,8 +2,9 @@
 // the development is an isometry of the truncated pyramid through the base and top polygons'
 // corners, the seam closes, every interior ring vertex is flat-foldable (Kawasaki: alternate
 // sector angles sum to pi; Maekawa: mountains and valleys differ by 2), the open-end
-// options leave the discs out, and the fan stack (every generator at 180 degrees, the rings
-// Z-folded) is an isometry with the rings folded by the asked angle of their kinds.
+// options leave the discs out, the fan stack (every generator at 180 degrees, the rings
+// Z-folded) is an isometry with the rings folded by the asked angle of their kinds, and the
+// gathered wall is an isometry with flat rings and its generators folded towards their kinds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -173,6 +174,55 @@ TEST(ConePattern, FanStackIsTheFlatFoldedWallAndItsRingsZFold) {
   ConeSpec closed = s;
   closed.base_disc = true;
   EXPECT_THROW(cone_fan_stack(closed, cone_crease_pattern(closed), 0), InputError);
+}
+
+TEST(ConePattern, GatheredWallIsRigidAndFoldsItsGeneratorsTowardTheirKinds) {
+  const ConeSpec s = open_cone();
+  CreasePattern p = cone_crease_pattern(s);
+  const std::vector<Vec3> deployed = p.vertices_folded_m;
+  // gather = 0: the deployed cone.
+  const std::vector<Vec3> same = cone_gathered(s, p, 0);
+  for (std::size_t v = 0; v < same.size(); ++v) {
+    EXPECT_NEAR((same[v] - deployed[v]).norm(), 0, 1e-12) << "vertex " << v;
+  }
+  std::map<int, double> before;
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    if (p.edges[e].face_count() == 2) before[e] = measured_fold_angle(p, static_cast<int>(e));
+  }
+  p.vertices_folded_m = cone_gathered(s, p, 0.6);
+  for (const PatternEdge& e : p.edges) {  // rigid facets: every edge keeps its length
+    const auto [a, b] = e.vertices;
+    EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(),
+                (p.vertices_folded_m[a] - p.vertices_folded_m[b]).norm(), 1e-12);
+  }
+  for (const auto& f : p.faces) {  // and stays planar
+    const auto& x = p.vertices_folded_m;
+    const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
+    EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
+  }
+  for (const auto& [e0, e1] : p.seams) {  // the seam stays closed
+    const auto v0 = p.edges[e0].vertices, v1 = p.edges[e1].vertices;
+    EXPECT_NEAR((p.vertices_folded_m[v0[0]] - p.vertices_folded_m[v1[1]]).norm(), 0, 1e-12);
+  }
+  // Rings stay flat; each generator turns from the deployed pyramid's angle towards its own
+  // kind (valleys, even generators, up towards 180 degrees; mountains down towards -180).
+  int generators = 0;
+  for (const auto& [e, angle] : before) {
+    const double now = measured_fold_angle(p, e), target = p.edges[e].fold_angle;
+    if (std::abs(std::abs(target) - s.axial_fold_angle) < 1e-12) {
+      EXPECT_NEAR(now, 0, 1e-9) << "ring edge " << e;
+    } else {
+      ++generators;
+      EXPECT_GT(now * target, angle * target + 0.5 * std::abs(target)) << "generator edge " << e;
+    }
+  }
+  EXPECT_EQ(generators, 2 * s.pleats * (s.axial_folds + 1));
+  // Only for the open wall, and gather in [0, 1).
+  EXPECT_THROW(cone_gathered(s, p, 1.0), InputError);
+  EXPECT_THROW(cone_gathered(s, p, -0.1), InputError);
+  ConeSpec closed = s;
+  closed.top_disc = true;
+  EXPECT_THROW(cone_gathered(closed, cone_crease_pattern(closed), 0.5), InputError);
 }
 
 }  // namespace

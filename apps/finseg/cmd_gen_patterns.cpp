@@ -3,6 +3,8 @@
 // docs/folding.md) and pulls it open.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -14,6 +16,7 @@
 #include "patterns/cone_pattern.hpp"
 #include "patterns/fold_format.hpp"
 #include "patterns/miura_pattern.hpp"
+#include "patterns/pattern_checks.hpp"
 #include "scene/gen_options.hpp"
 #include "scene/scene_parts.hpp"
 #include "writers/atomic_write.hpp"
@@ -145,6 +148,45 @@ void register_miura(CLI::App* gen) {
   });
 }
 
+Vec3 folded_centroid(const std::vector<Vec3>& x, const std::vector<int>& face) {
+  Vec3 c = Vec3::Zero();
+  for (int v : face) c += x[v];
+  return c / static_cast<double>(face.size());
+}
+
+// The wall gathered (cone_gathered), each crease's fold angle that of the gathered state (so
+// that it rests there with `crease_rest: pattern`): a generator's as measured where it agrees
+// with its kind, else 0, the rings' 0 (flat).
+void gather_pattern(const ConeSpec& s, CreasePattern& p, double gather) {
+  p.vertices_folded_m = cone_gathered(s, p, gather);
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    PatternEdge& edge = p.edges[e];
+    if (edge.face_count() != 2 || edge.fold_angle == 0) continue;
+    const int per_ring = 2 * s.pleats + 2;  // wall vertex ring * per_ring + line
+    const bool ring = edge.vertices[0] / per_ring == edge.vertices[1] / per_ring;
+    const double measured = measured_fold_angle(p, static_cast<int>(e));
+    edge.fold_angle = ring || measured * edge.fold_angle < 0 ? 0.0 : measured;
+  }
+}
+
+// Fixed end plates closing wall ring `ring` (0: the top): a fan of triangles from the ring's
+// centre, counter-clockwise seen from outside the cone (from above at the top).
+std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, bool top) {
+  const int W = 2 * s.pleats + 1, first = ring * (W + 1);
+  Vec3 c = Vec3::Zero();
+  for (int l = 0; l < W; ++l) c += x[first + l];
+  c /= W;
+  std::string out;
+  auto point = [](const Vec3& v) {
+    return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", v.x(), v.y(), v.z());
+  };
+  for (int l = 0; l < W; ++l) {
+    const Vec3 &a = x[first + l], &b = x[first + (l + 1) % W];
+    out += fmt::format("      - [{}, {}, {}]\n", point(c), point(top ? a : b), point(top ? b : a));
+  }
+  return out;
+}
+
 // "disc" or "open" for --top / --base.
 bool disc_end(const std::string& value, const char* option) {
   if (value != "disc" && value != "open") {
@@ -161,6 +203,7 @@ void register_cone(CLI::App* gen) {
   auto ends = std::make_shared<std::pair<std::string, std::string>>("disc", "disc");
   auto fold_steps = std::make_shared<int>(0);
   auto stowed = std::make_shared<double>(-1);
+  auto gathered = std::make_shared<double>(-1);
   CLI::App* c = gen->add_subcommand(
       "cone", "conical skin with radial pleats and axial zigzag folds, top pulled along the axis");
   c->add_option("--base-radius", s->base_radius, "m")->capture_default_str();
@@ -187,8 +230,18 @@ void register_cone(CLI::App* gen) {
       c->add_option("--stowed", *stowed,
                     "start from the fan stack Z-folded by this ring angle, deg [0, 180] (open "
                     "ends only); the base band pulled away from the top band");
+  auto inflate = std::make_shared<bool>(false);
+  c->add_flag("--inflate", *inflate,
+              "with --gathered: deploy by gas instead of the pull (one chamber of the wall "
+              "closed by fixed end plates, an inflator and a vent to space; docs/gas.md)");
+  CLI::Option* gathered_option = c->add_option(
+      "--gathered", *gathered,
+      "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
+      "that brings every other generator onto the axis (open ends only; no facets coincide, "
+      "contact on); a base facet pulled back out");
   add_sheet_options(c, *o);
-  c->callback([o, s, angles, fraction, ends, fold_steps, stowed, stowed_option] {
+  c->callback([o, s, angles, fraction, ends, fold_steps, stowed, stowed_option, gathered,
+               gathered_option, inflate] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
@@ -207,22 +260,51 @@ void register_cone(CLI::App* gen) {
     if (from_stack && !(*stowed >= 0 && *stowed <= 180)) {
       throw InputError("<cli>", "--stowed", fmt::format("{} deg; allowed [0, 180]", *stowed));
     }
+    const bool from_gathered = gathered_option->count() > 0;
+    if (from_gathered && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", "--gathered", "needs --top open --base open");
+    }
+    if (from_gathered && from_stack) {
+      throw InputError("<cli>", "--gathered", "give --gathered or --stowed, not both");
+    }
+    if (from_gathered && !(*gathered >= 0 && *gathered < 1)) {
+      throw InputError("<cli>", "--gathered", fmt::format("{}; allowed [0, 1)", *gathered));
+    }
+    if (*inflate && !from_gathered) throw InputError("<cli>", "--inflate", "needs --gathered");
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
     if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
+    const std::vector<Vec3> deployed = p.vertices_folded_m;
+    if (from_gathered) gather_pattern(*s, p, *gathered);
     // Clamped: the base hub, else the base band's wedge 1 (the first whole facet). Pulled:
     // the top hub, else the top band's facet across the axis from that (wedge pleats + 1).
     // From the fan stack: the top band's wedge 1 clamped, the base band's pulled away from
     // the apex along the stack's middle (+x).
-    const int clamped = from_stack     ? cone_face(*s, 0, 1)
-                        : s->base_disc ? cone_hub_face(*s, false)
-                                       : cone_face(*s, s->axial_folds, 1);
-    const int pulled = from_stack    ? cone_face(*s, s->axial_folds, 1)
-                       : s->top_disc ? cone_hub_face(*s, true)
-                                     : cone_face(*s, 0, s->pleats + 1);
-    const char* direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
+    // Gathered: the top band's wedge 1 clamped, the base band's facet across the axis from it
+    // pulled radially out to where it sits on the deployed cone.
+    const int clamped = from_stack || from_gathered ? cone_face(*s, 0, 1)
+                        : s->base_disc              ? cone_hub_face(*s, false)
+                                                    : cone_face(*s, s->axial_folds, 1);
+    const int pulled = from_stack      ? cone_face(*s, s->axial_folds, 1)
+                       : from_gathered ? cone_face(*s, s->axial_folds, s->pleats + 1)
+                       : s->top_disc   ? cone_hub_face(*s, true)
+                                       : cone_face(*s, 0, s->pleats + 1);
+    std::string direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
+    double travel = 0.8 * s->height;
+    if (from_gathered) {
+      const Vec3 now = folded_centroid(p.vertices_folded_m, p.faces[pulled]),
+                 there = folded_centroid(deployed, p.faces[pulled]);
+      const Vec2 out(now.x(), now.y());
+      direction = fmt::format("[{:.9g}, {:.9g}, 0]", out.x() / out.norm(), out.y() / out.norm());
+      travel = Vec2(there.x(), there.y()).norm() - out.norm();
+    }
     const Vec2 top = face_centroid(p, pulled);
+    // Contact stiffness from the thickness and the load (docs/folding.md, "Contact
+    // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
+    // it a quarter of the thickness.
+    const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
+    const double contact_stiffness = most_force / std::pow(0.25 * o->thickness, 1.5);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
     const std::string folding_solver =
@@ -230,7 +312,13 @@ void register_cone(CLI::App* gen) {
             ? fmt::format("{{type: static, load_steps: {}, max_iterations: 50}}", *fold_steps)
             : std::string("{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}");
     const std::string how_to_run =
-        from_stack
+        from_gathered
+            ? fmt::format(
+                  "# Starts gathered ({:g} of the way to every other generator on the axis): "
+                  "no facets coincide.\n"
+                  "# Pull it open (contact on): finseg run {} --out deploy\n",
+                  *gathered, scene_name)
+        : from_stack
             ? fmt::format(
                   "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding.\n"
                   "# Pull it (contact off, docs/folding.md): finseg run {} --set "
@@ -246,16 +334,18 @@ void register_cone(CLI::App* gen) {
         "axial folds,\n"
         "# top {}, base {}.\n"
         "{}"
-        "title: folded cone pulled open by its top\n{}"
+        "title: {}\n{}"
         "fixtures: {{panels: [{}]}}   # {}\n"
-        "contact: {{stiffness: 1.0e5, exponent: 1.5,\n"
+        "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
+        "thickness\n"
+        "contact: {{stiffness: {:.3g}, exponent: 1.5,\n"
         "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
         "folding:\n"
         "  fraction: {:g}\n"
         "  duration: 1.0\n"
         "  solver: {}\n"
         "drives:\n"
-        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: 20,\n"
+        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
         "     travel: {:.6g}, step: {:.6g}, speed: {:.6g}}}\n"
         "probes:\n"
         "  - {{name: top, type: drive, drive: top}}\n"
@@ -264,13 +354,62 @@ void register_cone(CLI::App* gen) {
         "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01}}\n"
         "outputs: {{vtk: true, html: true, plot: true}}\n",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
-        ends->second, how_to_run, sheet_sections(*o, fold_file), clamped + 1,
-        from_stack     ? "one face of the top band"
-        : s->base_disc ? "the base disc's hub"
-                       : "one face of the base band",
-        *fraction, folding_solver, top.x(), top.y(), direction, 0.8 * s->height,
-        0.8 * s->height / 100, 0.8 * s->height);
-    write_pair(*o, p, yaml);
+        ends->second, how_to_run,
+        from_gathered ? "gathered cone, a base facet pulled back out"
+                      : "folded cone pulled open by its top",
+        sheet_sections(*o, fold_file), clamped + 1,
+        from_stack || from_gathered ? "one face of the top band"
+        : s->base_disc              ? "the base disc's hub"
+                                    : "one face of the base band",
+        most_force, contact_stiffness, *fraction, folding_solver, top.x(), top.y(), direction,
+        gauge, travel, travel / 100, travel);
+    if (!*inflate) {
+      write_pair(*o, p, yaml);
+      return;
+    }
+    // The inflator's air fills the deployed faceted frustum to 1 kPa at 300 K, injected over
+    // 60 ms (ramps of 10 ms at both ends).
+    const int G = 2 * s->pleats;
+    const double polygon = 0.5 * G * std::sin(2 * kPi / G),
+                 A_base = polygon * s->base_radius * s->base_radius,
+                 A_top = polygon * s->top_radius * s->top_radius;
+    const double volume = s->height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
+    const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
+    const std::string gas_yaml = fmt::format(
+        "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
+        "axial folds,\n"
+        "# gathered {:g} of the way to every other generator on the axis (no facets coincide),\n"
+        "# inflated: the wall and two fixed end plates (triangles from each end ring's centre,\n"
+        "# where the rings start) are one chamber of adiabatic air filled from vacuum by an\n"
+        "# inflator and bled by a vent to space (docs/gas.md).\n"
+        "# Run: finseg run {} --out inflated\n"
+        "title: gathered cone inflated\n{}"
+        "fixtures: {{panels: [{}]}}   # one face of the top band\n"
+        "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
+        "contact: {{stiffness: {:.3g}, exponent: 1.5,\n"
+        "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+        "chambers:\n"
+        "  - name: cone\n"
+        "    faces:\n"
+        "      - {{bodies: all, outward: {}}}\n"
+        "    end_plates:\n{}{}"
+        "    gas: adiabatic\n"
+        "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
+        "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
+        "             temperature: [300, 300, 300, 300]}}\n"
+        "    vents:\n"
+        "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n"
+        "probes:\n"
+        "  - {{name: energy, type: energy}}\n"
+        "  - {{name: contact, type: contact}}\n"
+        "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
+        "outputs: {{vtk: true, html: true, plot: true}}\n",
+        s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, *gathered, scene_name,
+        sheet_sections(*o, fold_file), clamped + 1, most_force, contact_stiffness, "+z",
+        end_plates(*s, p.vertices_folded_m, 0, true),
+        end_plates(*s, p.vertices_folded_m, s->axial_folds + 1, false), air_kg, volume, peak_flow,
+        peak_flow);
+    write_pair(*o, p, gas_yaml);
   });
 }
 

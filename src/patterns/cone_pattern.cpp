@@ -235,4 +235,50 @@ std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, doub
   return x;
 }
 
+std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, double gather) {
+  validate(s);
+  if (s.top_disc || s.base_disc) {
+    throw InputError("<api>", s.top_disc ? "top_disc" : "base_disc",
+                     "a disc blocks the gathering: both ends must be open");
+  }
+  if (!(gather >= 0 && gather < 1)) {
+    throw InputError("<api>", "gather", fmt::format("{}; allowed range [0, 1)", gather));
+  }
+  const int G = 2 * s.pleats;
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const Vec3 apex(0, 0, z_apex);
+  auto flat_angle = [&](int v) {
+    const Vec2 u = p.vertices_flat_m[v];
+    const double a = std::atan2(u.y(), u.x());
+    return a < -1e-12 ? a + 2 * kPi : std::max(a, 0.0);  // the development spans [0, G beta]
+  };
+  const double beta = flat_angle(2) - flat_angle(1);
+  // Generator k at azimuth 2 pi (k + 1/2) / G, at angle a_k to the downward axis. Even ones
+  // at a_in; odd ones at a_out with cos beta = cos a_in cos a_out + sin a_in sin a_out
+  // cos(2 pi / G) (neighbours beta apart: the facets rigid), the root that is the deployed
+  // angle at gather = 0.
+  const double a0 = std::atan2(s.base_radius, z_apex);
+  const double a_in = (1 - gather) * a0;
+  const double A = std::cos(a_in), Bc = std::sin(a_in) * std::cos(2 * kPi / G);
+  const double a_out = std::atan2(Bc, A) + std::acos(std::cos(beta) / std::hypot(A, Bc));
+  std::vector<Vec3> g(G + 2);  // g[k]: generator k - 1 (modulo G), as in cone_crease_pattern
+  for (int k = 0; k <= G + 1; ++k) {
+    const int gen = ((k - 1) % G + G) % G;
+    const double psi = 2 * kPi * (k - 0.5) / G, a = gen % 2 == 0 ? a_in : a_out;
+    g[k] = Vec3(std::sin(a) * std::cos(psi), std::sin(a) * std::sin(psi), -std::cos(a));
+  }
+  // A vertex at flat angle phi lies in its facet's plane, turned from the facet's first
+  // generator by phi less that generator's flat angle.
+  std::vector<Vec3> x(p.vertices_flat_m.size());
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    const double phi = flat_angle(static_cast<int>(v));
+    const int k = std::min(G, static_cast<int>(std::floor(phi / beta + 0.5)));
+    const Vec3 &a = g[k], &b = g[k + 1];
+    const Vec3 e = (b - a.dot(b) * a).normalized();
+    const double t = phi - (k - 0.5) * beta;
+    x[v] = apex + p.vertices_flat_m[v].norm() * (std::cos(t) * a + std::sin(t) * e);
+  }
+  return x;
+}
+
 }  // namespace finseg

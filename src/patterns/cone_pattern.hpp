@@ -49,4 +49,13 @@ CreasePattern cone_crease_pattern(const ConeSpec& s);
 /// "base_disc", ...) otherwise). Exact for sheets of no thickness: the layers coincide.
 std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, double ring_angle);
 
+/// The open wall gathered part way along its symmetric motion (docs/folding.md, "The
+/// gathered cone"): every facet rigid, the even generators' angle to the axis shrunk to
+/// (1 - gather) times the deployed one and the odd generators' chosen so that neighbours stay
+/// the development's angle apart; azimuths, apex and rings (flat) unchanged. gather = 0 is the
+/// deployed cone; gather -> 1 brings the even generators onto the axis. Unlike the fan stack,
+/// this is a state a sheet with thickness can take: no two facets coincide. Vertices as in
+/// `p` = `cone_crease_pattern(s)` with both ends open; gather in [0, 1) (throws InputError).
+std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, double gather);
+
 }  // namespace finseg
