@@ -210,7 +210,9 @@ double refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b,
   return e_best;
 }
 
-bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+// Solves A X = B, one factorization for all columns (each solved as a vector: the same bits
+// as a single solve).
+bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
   thread_local PatternCache<LuSlot> cache;
   bool analyse = false;
   LuSlot& slot = cache.slot_for(A, analyse);
@@ -218,8 +220,14 @@ bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
       analyse, [&] { slot.lu.analyzePattern(A); }, [&] { slot.lu.factorize(A); });
   ++linear_solve_counters().lu_factorizations;
   if (slot.lu.info() != Eigen::Success) return false;
-  x = slot.lu.solve(b);
-  return slot.lu.info() == Eigen::Success && x.allFinite();
+  X.resize(B.rows(), B.cols());
+  for (Eigen::Index j = 0; j < B.cols(); ++j) {
+    const Eigen::VectorXd b = B.col(j);
+    const Eigen::VectorXd x = slot.lu.solve(b);
+    if (slot.lu.info() != Eigen::Success || !x.allFinite()) return false;
+    X.col(j) = x;
+  }
+  return true;
 }
 
 // The symmetric path for A, whose symmetric part S is (S itself when `exact`); nullopt if it
@@ -229,20 +237,37 @@ bool lu_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 // refinement stalls just above kBackwardError: 1.7e-14 on a generalized-alpha matrix of a
 // 10^4-segment sheet; at 10^5 the LU took more than 8 GB).
 std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, bool exact,
-                                               const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                               const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
                                                int& steps) {
   SymmetricSlot& slot = symmetric_slot(S);
+  // Each column refined as a vector, accepted if `accept` says so for its backward error.
+  const auto solve_columns = [&](const Cholmod& f, auto accept) {
+    X.resize(B.rows(), B.cols());
+    for (Eigen::Index j = 0; j < B.cols(); ++j) {
+      Eigen::VectorXd x;
+      int s = 0;
+      const double e = refined_solve(f, A, B.col(j), x, s);
+      steps = std::max(steps, s);
+      if (!accept(e)) return false;
+      X.col(j) = x;
+    }
+    return true;
+  };
+  steps = 0;
   if (factor(slot.automatic, slot.automatic_analysed, S)) {
     const bool pd = slot.automatic.positive_definite();
-    const double e = refined_solve(slot.automatic, A, b, x, steps);
-    if (e > kBackwardError && !(pd && exact && e < INFINITY)) return std::nullopt;
+    if (!solve_columns(slot.automatic, [&](double e) {
+          return e <= kBackwardError || (pd && exact && e < INFINITY);
+        })) {
+      return std::nullopt;
+    }
     return slot.automatic.is_ll() ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
   }
   // L L^T met a non-positive pivot (indefinite); L D L^T failed only on an exact zero pivot.
   if (!slot.automatic.is_ll()) return std::nullopt;
   ++linear_solve_counters().indefinite;
   if (factor(slot.ldlt, slot.ldlt_analysed, S) &&
-      refined_solve(slot.ldlt, A, b, x, steps) <= kBackwardError) {
+      solve_columns(slot.ldlt, [](double e) { return e <= kBackwardError; })) {
     return LinearSolvePath::LDLT;
   }
   return std::nullopt;
@@ -297,11 +322,11 @@ SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
 
 namespace {
 
-bool solve_system(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
                   LinearSolveInfo* info) {
   SpMat Ac = A;
   Ac.makeCompressed();
-  if (!clean_entries(Ac) || !b.allFinite()) return false;
+  if (!clean_entries(Ac) || !B.allFinite()) return false;
   LinearSolveInfo report;
   report.asymmetry = asymmetry_ratio(Ac);
   bool ok = false;
@@ -309,17 +334,26 @@ bool solve_system(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
     // Also for a symmetric A: its stored pattern need not be (a stored zero), and CHOLMOD
     // crashed on such a pattern (ContactDynamics.StaticSolverHoldsAPlateInsideTheCone).
     const SpMat S = symmetric_part(Ac);
-    if (const auto path = symmetric_solve(Ac, S, report.asymmetry == 0, b, x, report.refinements)) {
+    if (const auto path = symmetric_solve(Ac, S, report.asymmetry == 0, B, X, report.refinements)) {
       report.path = *path;
       ok = true;
     }
   }
   if (!ok) {
     report.path = LinearSolvePath::LU;
-    ok = lu_solve(Ac, b, x);
+    ok = lu_solve(Ac, B, X);
   }
   if (info != nullptr) *info = report;
   return ok;
+}
+
+// A vector as a one-column matrix and back.
+template <class Solve>
+bool solve_vector(const Eigen::VectorXd& b, Eigen::VectorXd& x, Solve solve) {
+  Eigen::MatrixXd X;
+  if (!solve(Eigen::MatrixXd(b), X)) return false;
+  x = X.col(0);
+  return true;
 }
 
 // Counts a whole call's time and number.
@@ -336,7 +370,16 @@ auto counted(Solve solve) {
 
 bool sparse_solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                   LinearSolveInfo* info) {
-  return counted([&] { return solve_system(A, b, x, info); });
+  return counted([&] {
+    return solve_vector(b, x, [&](const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
+      return solve_system(A, B, X, info);
+    });
+  });
+}
+
+bool sparse_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                  LinearSolveInfo* info) {
+  return counted([&] { return solve_system(A, B, X, info); });
 }
 
 bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::VectorXd& x,
@@ -344,18 +387,21 @@ bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::Vec
   return counted([&] {
     if (!S.finite() || !b.allFinite()) return false;
     LinearSolveInfo report;
+    const Eigen::MatrixXd B = b;
+    Eigen::MatrixXd X;
     bool ok = false;
     if (S.size() > 0) {
       if (const auto path =
-              symmetric_solve(S.matrix(), S.matrix(), true, b, x, report.refinements)) {
+              symmetric_solve(S.matrix(), S.matrix(), true, B, X, report.refinements)) {
         report.path = *path;
         ok = true;
       }
     }
     if (!ok) {
       report.path = LinearSolvePath::LU;
-      ok = lu_solve(S.matrix(), b, x);
+      ok = lu_solve(S.matrix(), B, X);
     }
+    if (ok) x = X.col(0);
     if (info != nullptr) *info = report;
     return ok;
   });

@@ -6,6 +6,7 @@
 // sparsity patterns are kept between solves. docs/solvers.md: when and why.
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 namespace finseg {
@@ -81,6 +82,11 @@ double asymmetry_ratio(const Eigen::SparseMatrix<double>& A);
 /// entry of A or b is not finite. Fills `info` when given.
 bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b,
                   Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
+
+/// Solves A X = B for the columns of B with one factorization (each column as sparse_solve
+/// would solve it alone, to the same bits).
+bool sparse_solve(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                  Eigen::MatrixXd& X, LinearSolveInfo* info = nullptr);
 
 /// Solves S x = b as sparse_solve does, without the symmetry checks: CHOLMOD's L L^T (or,
 /// small, L D L^T); an indefinite S is factored again as simplicial L D L^T, then LU.

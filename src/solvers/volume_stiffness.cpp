@@ -35,25 +35,25 @@ VolumeStiffness volume_stiffness(const Model& model, const State& state) {
 bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
                                  const VolumeStiffness& terms, const Eigen::VectorXd& b,
                                  Eigen::VectorXd& x) {
-  if (!sparse_solve(A, b, x)) return false;
   const int n = static_cast<int>(terms.a.size());
-  if (n == 0) return true;
-  // (A + U C U^T)^-1 b = y - Z (C^-1 + U^T Z)^-1 U^T y with y = A^-1 b, Z = A^-1 U.
-  Eigen::MatrixXd Z(b.size(), n), cap = Eigen::MatrixXd::Zero(n, n);
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd z;
-    if (!sparse_solve(A, terms.a[j], z)) return false;
-    Z.col(j) = z;
-  }
+  if (n == 0) return sparse_solve(A, b, x);
+  // (A + U C U^T)^-1 b = y - Z (C^-1 + U^T Z)^-1 U^T y with y = A^-1 b, Z = A^-1 U: one
+  // factorization of A for b and the a_k.
+  Eigen::MatrixXd B(b.size(), n + 1), Y;
+  B.col(0) = b;
+  for (int j = 0; j < n; ++j) B.col(j + 1) = terms.a[j];
+  if (!sparse_solve(A, B, Y)) return false;
+  const auto Z = Y.rightCols(n);
+  Eigen::MatrixXd cap(n, n);
   Eigen::VectorXd Uty(n);
   for (int i = 0; i < n; ++i) {
-    Uty[i] = terms.a[i].dot(x);
+    Uty[i] = terms.a[i].dot(Y.col(0));
     for (int j = 0; j < n; ++j) cap(i, j) = terms.a[i].dot(Z.col(j));
     cap(i, i) += 1 / (s * terms.k[i]);
   }
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(cap);
   if (!lu.isInvertible()) return false;
-  x -= Z * lu.solve(Uty);
+  x = Y.col(0) - Z * lu.solve(Uty);
   return x.allFinite();
 }
 

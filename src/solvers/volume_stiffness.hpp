@@ -22,7 +22,7 @@ struct VolumeStiffness {
 /// The terms at `state` (its trial poses, its time and its chambers' last records).
 VolumeStiffness volume_stiffness(const Model& model, const State& state);
 
-/// Solves (A + s sum_k k_k a_k a_k^T) x = b with sparse_solve on A (for b and each a_k);
+/// Solves (A + s sum_k k_k a_k a_k^T) x = b with one sparse_solve of A for b and every a_k;
 /// false where sparse_solve fails or the small capacitance system is singular.
 bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
                                  const VolumeStiffness& terms, const Eigen::VectorXd& b,
