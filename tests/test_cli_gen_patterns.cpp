@@ -112,6 +112,26 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("--gathered"), std::string::npos) << r.err;
   }
+  // Cut to a target segment size graded towards the folds: the scene says so and reads back
+  // with more segments than one per face.
+  r = run_finseg(dir,
+                 "gen cone --pleats 6 --axial-folds 2 --top open --base open "
+                 "--segment-size 0.03 --crease-refinement 2 --out sz.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(test::slurp(dir / "sz.yaml").find("segment_size: 0.03"), std::string::npos);
+  EXPECT_NE(test::slurp(dir / "sz.yaml").find("crease_refinement: 2"), std::string::npos);
+  r = run_finseg(dir, "inspect sz.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto at = r.out.find("bodies ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  EXPECT_GT(std::stoi(r.out.substr(at + 7)), 39) << r.out;
+  for (const auto& [bad, field] : {std::pair{"--segment-size -0.01", "--segment-size"},
+                                   {"--subdivisions 2 --segment-size 0.01", "--segment-size"},
+                                   {"--crease-refinement 0.5", "--crease-refinement"}}) {
+    r = run_finseg(dir, std::string("gen cone --top open --base open ") + bad + " --out l.yaml");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find(field), std::string::npos) << r.err;
+  }
   r = run_finseg(dir, "gen cone --top open --base open --inflate --out l.yaml");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--inflate"), std::string::npos) << r.err;

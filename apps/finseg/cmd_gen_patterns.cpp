@@ -32,6 +32,8 @@ struct SheetOptions {
   std::string out;
   double thickness = 1e-4, modulus = 3e9, density = 800, crease_stiffness = 0.05;
   int subdivisions = 2;
+  double segment_size = 0, crease_refinement = 1;  // m (0: by subdivisions), ratio
+  CLI::Option* subdivisions_option = nullptr;
 };
 
 void add_sheet_options(CLI::App* c, SheetOptions& o) {
@@ -41,7 +43,14 @@ void add_sheet_options(CLI::App* c, SheetOptions& o) {
   c->add_option("--crease-stiffness", o.crease_stiffness,
                 "linear crease stiffness per metre of crease, N m/rad/m (resting folded)")
       ->capture_default_str();
-  c->add_option("--subdivisions", o.subdivisions, "each face into n x n segments")
+  o.subdivisions_option =
+      c->add_option("--subdivisions", o.subdivisions, "each face into n x n segments")
+          ->capture_default_str();
+  c->add_option("--segment-size", o.segment_size,
+                "m: segments of at most this side along every crease, in place of "
+                "--subdivisions (docs/fold.md, Segments)");
+  c->add_option("--crease-refinement", o.crease_refinement,
+                "segments graded towards the folds: the one at a fold 1/this of the middle one")
       ->capture_default_str();
   c->add_option("--out", o.out, "scene file to write; the pattern goes beside it as .fold")
       ->required();
@@ -56,6 +65,25 @@ void check_sheet(const SheetOptions& o) {
     throw InputError("<cli>", "--subdivisions",
                      fmt::format("{}; allowed range 1..64", o.subdivisions));
   }
+  if (o.segment_size != 0) {
+    require_positive(o.segment_size, "<cli>", "--segment-size", "m");
+    if (o.subdivisions_option != nullptr && o.subdivisions_option->count() > 0) {
+      throw InputError("<cli>", "--segment-size", "give either --subdivisions or --segment-size");
+    }
+  }
+  if (!(o.crease_refinement >= 1 && o.crease_refinement <= 100)) {
+    throw InputError("<cli>", "--crease-refinement",
+                     fmt::format("{}; allowed range [1, 100]", o.crease_refinement));
+  }
+}
+
+// The pattern section's discretisation lines.
+std::string discretisation_lines(const SheetOptions& o) {
+  std::string s = o.segment_size > 0 ? fmt::format("  segment_size: {:g}\n", o.segment_size)
+                                     : fmt::format("  subdivisions: {}\n", o.subdivisions);
+  if (o.crease_refinement != 1)
+    s += fmt::format("  crease_refinement: {:g}\n", o.crease_refinement);
+  return s;
 }
 
 // The scene's material, sheet and pattern sections (laws resting at the pattern's angles).
@@ -65,13 +93,13 @@ std::string sheet_sections(const SheetOptions& o, const std::string& fold_file) 
       "sheet: {{thickness: {:g}}}\n"
       "pattern:\n"
       "  file: {}\n"
-      "  subdivisions: {}\n"
+      "{}"
       "  start: folded            # the pattern's folded coordinates\n"
       "  crease_rest: pattern     # each crease rests at its edges_foldAngle\n"
       "  crease_law_length: 1.0   # laws below are per metre of crease\n"
       "  mountain_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n"
       "  valley_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n",
-      o.modulus, o.density, o.thickness, fold_file, o.subdivisions, o.crease_stiffness,
+      o.modulus, o.density, o.thickness, fold_file, discretisation_lines(o), o.crease_stiffness,
       o.crease_stiffness);
 }
 
