@@ -5,6 +5,7 @@
 #include "elements/chamber_gas.hpp"
 #include "elements/crease_history.hpp"
 #include "elements/force_elements.hpp"
+#include "elements/membrane_cells.hpp"
 #include "elements/plate_cells.hpp"
 #include "elements/pressure.hpp"
 
@@ -75,6 +76,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   Assembler as(model, state, out, jac);
   add_force_elements(model, state, as);
   add_plate_cells(model, state, as);
+  add_membrane_cells(model, state, as);
   add_loads_and_gravity(model, state, as);
   add_pressure_loads(model, state, as);
   add_chamber_pressures(model, state, as);

@@ -207,6 +207,33 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
   }
 }
 
+// The free cells' membrane corrections (docs/stiffness.md, "Cell membrane correction"), from
+// the same side geometry as the curvature corrections and the joints' T1 (across) and T2
+// (along) springs.
+std::vector<MembraneCellDef> membrane_cells(
+    const Model& m, const std::vector<std::vector<CellSideGeometry>>& cell_sides,
+    const PatternSheetSpec& spec) {
+  std::vector<MembraneCellDef> cells;
+  for (std::size_t c = 0; c < cell_sides.size(); ++c) {
+    if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
+    std::vector<MembraneSideGeometry> sides;
+    for (const CellSideGeometry& g : cell_sides[c]) {
+      const ElementDef& e = m.elements[g.side.element];
+      const Vec2 a = g.across_M, t(-a.y(), a.x());
+      MembraneSideGeometry ms;
+      ms.side = g.side;
+      ms.d_M = g.d_M;
+      ms.share = g.share;
+      ms.K_M = e.K[0] * a * a.transpose() + e.K[1] * t * t.transpose();
+      sides.push_back(ms);
+    }
+    cells.push_back(membrane_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]), sides,
+                                             spec.youngs_modulus, spec.poisson_ratio,
+                                             spec.thickness));
+  }
+  return cells;
+}
+
 // PatternSheetSpec::hessian_bending, unset: on where the joints and corrections do not converge
 // (triangles), off on quadrilaterals (where they are more accurate) and with seams.
 bool uses_hessian_bending(const PatternSheetSpec& s, const CreasePattern& p,
@@ -338,6 +365,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   const double D =
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
+  m.membrane_cells = membrane_cells(m, cell_sides, spec);
   if (hessian) {
     m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio);
     for (ElementDef& e : m.elements) {

@@ -17,6 +17,50 @@ Mat23 rotation_of_curvature(const Vec2& d) {
   return B;
 }
 
+// Q of a correction: the cell's uniform field (3 components) fitted to its sides'
+// measurements by weighted least squares, field = G^+ W measurements, and S (what the joints
+// miss per uniform field) with the components no side sees condensed out (minimised: free).
+Eigen::MatrixXd fitted_correction(const Mat3& S, const Mat3& G, const Eigen::MatrixXd& W) {
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(G);
+  const double tol = 1e-10 * eig.eigenvalues().cwiseAbs().maxCoeff();
+  Mat3 G_pinv = Mat3::Zero();
+  Eigen::MatrixXd N(3, 0);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 v = eig.eigenvectors().col(i);
+    if (eig.eigenvalues()[i] > tol) {
+      G_pinv += v * v.transpose() / eig.eigenvalues()[i];
+    } else {
+      N.conservativeResize(3, N.cols() + 1);
+      N.col(N.cols() - 1) = v;
+    }
+  }
+  Mat3 S_eff = S;
+  if (N.cols() > 0) {
+    // Pseudo-inverse: where the joints already store all of the target energy in a component
+    // no side sees (N^T S N = 0 there, e.g. crease sides counted whole), nothing is condensed.
+    const Eigen::MatrixXd SN = S * N;
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> en(N.transpose() * SN);
+    const double s_tol = 1e-10 * std::max(S.cwiseAbs().maxCoeff(), 1e-300);
+    Eigen::MatrixXd inv = Eigen::MatrixXd::Zero(N.cols(), N.cols());
+    for (int i = 0; i < N.cols(); ++i) {
+      const double l = en.eigenvalues()[i];
+      if (std::abs(l) > s_tol)
+        inv += en.eigenvectors().col(i) * en.eigenvectors().col(i).transpose() / l;
+    }
+    S_eff -= SN * inv * SN.transpose();
+  }
+  const Eigen::MatrixXd P = G_pinv * W;
+  return P.transpose() * S_eff * P;
+}
+
+// Relative in-plane displacement across d for the uniform strain (e_xx, e_yy, g_xy),
+// g_xy the engineering shear: (e_xx d_x + g_xy d_y / 2, g_xy d_x / 2 + e_yy d_y).
+Mat23 displacement_of_strain(const Vec2& d) {
+  Mat23 B;
+  B << d.x(), 0, 0.5 * d.y(), 0, d.y(), 0.5 * d.x();
+  return B;
+}
+
 }  // namespace
 
 PlateCellDef plate_cell_correction(int body, double area,
@@ -46,38 +90,28 @@ PlateCellDef plate_cell_correction(int body, double area,
   for (std::size_t k = 0; k < Wk.size(); ++k) W.middleCols<2>(2 * k) = Wk[k];
   Mat3 C;
   C << 1, nu, 0, nu, 1, 0, 0, 0, 2 * (1 - nu);
-  const Mat3 S = area * D * C - M;  // what the joints miss, per uniform curvature
-  // Fit kappa = G^+ W Theta; the null space of G is condensed out of S.
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(G);
-  const double tol = 1e-10 * eig.eigenvalues().cwiseAbs().maxCoeff();
-  Mat3 G_pinv = Mat3::Zero();
-  Eigen::MatrixXd N(3, 0);
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 v = eig.eigenvectors().col(i);
-    if (eig.eigenvalues()[i] > tol) {
-      G_pinv += v * v.transpose() / eig.eigenvalues()[i];
-    } else {
-      N.conservativeResize(3, N.cols() + 1);
-      N.col(N.cols() - 1) = v;
-    }
+  cell.Q = fitted_correction(area * D * C - M, G, W);
+  return cell;
+}
+
+MembraneCellDef membrane_cell_correction(int body, double area,
+                                         const std::vector<MembraneSideGeometry>& sides, double E,
+                                         double nu, double t) {
+  MembraneCellDef cell;
+  cell.body = body;
+  Mat3 G = Mat3::Zero(), M = Mat3::Zero();
+  Eigen::MatrixXd W(3, 2 * sides.size());
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const Mat23 B = displacement_of_strain(sides[k].d_M);
+    const Mat3 BKB = B.transpose() * sides[k].K_M * B;
+    G += BKB;
+    M += sides[k].share * BKB;
+    W.middleCols<2>(2 * k) = B.transpose() * sides[k].K_M;
+    cell.sides.push_back(sides[k].side);
   }
-  Mat3 S_eff = S;
-  if (N.cols() > 0) {
-    // Pseudo-inverse: where the joints already store all of Kirchhoff's energy in a component
-    // no side sees (N^T S N = 0 there, e.g. crease sides counted whole), nothing is condensed.
-    const Eigen::MatrixXd SN = S * N;
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> en(N.transpose() * SN);
-    const double s_tol = 1e-10 * std::max(S.cwiseAbs().maxCoeff(), 1e-300);
-    Eigen::MatrixXd inv = Eigen::MatrixXd::Zero(N.cols(), N.cols());
-    for (int i = 0; i < N.cols(); ++i) {
-      const double l = en.eigenvalues()[i];
-      if (std::abs(l) > s_tol)
-        inv += en.eigenvectors().col(i) * en.eigenvectors().col(i).transpose() / l;
-    }
-    S_eff -= SN * inv * SN.transpose();
-  }
-  const Eigen::MatrixXd P = G_pinv * W;
-  cell.Q = P.transpose() * S_eff * P;
+  Mat3 C;  // plane stress, engineering shear
+  C << 1, nu, 0, nu, 1, 0, 0, 0, 0.5 * (1 - nu);
+  cell.Q = fitted_correction(area * E * t / (1 - nu * nu) * C - M, G, W);
   return cell;
 }
 

@@ -32,4 +32,21 @@ struct CellSideGeometry {
 PlateCellDef plate_cell_correction(int body, double area,
                                    const std::vector<CellSideGeometry>& sides, double D, double nu);
 
+/// One side of a cell for the membrane correction, on the flat sheet.
+struct MembraneSideGeometry {
+  PlateCellSide side;       ///< element and sign (+1: the cell is the element's outer body)
+  Vec2 d_M = Vec2::Zero();  ///< as CellSideGeometry::d_M, m
+  Eigen::Matrix2d K_M = Eigen::Matrix2d::Zero();  ///< joint's in-plane stiffness, cell axes, N/m
+  double share = 0.5;  ///< part of the joint's energy that is this cell's (1 at a clamp)
+};
+
+/// Q such that, for every uniform in-plane strain, joints plus correction store the plane-
+/// stress energy area * 1/2 e^T C e, C = E t / (1 - nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0,
+/// (1 - nu) / 2]] (engineering shear): the joints alone have no Poisson coupling and, on a
+/// grid, half the shear (each direction's joints see half the shear angle). The strain is
+/// fitted to the sides' joint translations; unseen components condensed out.
+MembraneCellDef membrane_cell_correction(int body, double area,
+                                         const std::vector<MembraneSideGeometry>& sides, double E,
+                                         double nu, double t);
+
 }  // namespace finseg

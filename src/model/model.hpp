@@ -116,6 +116,7 @@ struct Model {
   std::vector<ElementDef> elements;
   /// Curvature corrections of plate cells (sheets cut from patterns; docs/stiffness.md).
   std::vector<PlateCellDef> plate_cells;
+  std::vector<MembraneCellDef> membrane_cells;  ///< in-plane corrections (Poisson, shear)
   std::vector<CreaseDef> creases;
   std::vector<LoadDef> loads;
   std::vector<DriveDef> drives;

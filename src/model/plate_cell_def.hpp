@@ -28,4 +28,15 @@ struct PlateCellDef {
   Eigen::MatrixXd Q;  ///< N m/rad, 2 sides x 2 sides
 };
 
+/// Membrane correction of a cell (docs/stiffness.md, "Cell membrane correction"):
+/// E = 1/2 delta^T Q delta, delta the in-plane components (x, y of the cell's frame B) of
+/// each side's joint translation (the inner attachment point less the outer one), signed as
+/// the neighbour's displacement relative to the cell; two per side, in `sides` order
+/// (PlateCellSide::R_BF unused).
+struct MembraneCellDef {
+  int body = -1;
+  std::vector<PlateCellSide> sides;
+  Eigen::MatrixXd Q;  ///< N/m, 2 sides x 2 sides
+};
+
 }  // namespace finseg
