@@ -322,6 +322,17 @@ SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
 
 namespace {
 
+// The symmetric path for A (symmetric part S, S itself when `exact`), else LU of A.
+bool symmetric_else_lu(const SpMat& A, const SpMat& S, bool exact, const Eigen::MatrixXd& B,
+                       Eigen::MatrixXd& X, LinearSolveInfo& report) {
+  if (const auto path = symmetric_solve(A, S, exact, B, X, report.refinements)) {
+    report.path = *path;
+    return true;
+  }
+  report.path = LinearSolvePath::LU;
+  return lu_solve(A, B, X);
+}
+
 bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
                   LinearSolveInfo* info) {
   SpMat Ac = A;
@@ -333,13 +344,8 @@ bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
   if (Ac.rows() > 0 && Ac.rows() == Ac.cols() && report.asymmetry <= kSymmetricAsymmetry) {
     // Also for a symmetric A: its stored pattern need not be (a stored zero), and CHOLMOD
     // crashed on such a pattern (ContactDynamics.StaticSolverHoldsAPlateInsideTheCone).
-    const SpMat S = symmetric_part(Ac);
-    if (const auto path = symmetric_solve(Ac, S, report.asymmetry == 0, B, X, report.refinements)) {
-      report.path = *path;
-      ok = true;
-    }
-  }
-  if (!ok) {
+    ok = symmetric_else_lu(Ac, symmetric_part(Ac), report.asymmetry == 0, B, X, report);
+  } else {
     report.path = LinearSolvePath::LU;
     ok = lu_solve(Ac, B, X);
   }
@@ -386,24 +392,18 @@ bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::Vec
                   LinearSolveInfo* info) {
   return counted([&] {
     if (!S.finite() || !b.allFinite()) return false;
-    LinearSolveInfo report;
-    const Eigen::MatrixXd B = b;
-    Eigen::MatrixXd X;
-    bool ok = false;
-    if (S.size() > 0) {
-      if (const auto path =
-              symmetric_solve(S.matrix(), S.matrix(), true, B, X, report.refinements)) {
-        report.path = *path;
-        ok = true;
+    return solve_vector(b, x, [&](const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
+      LinearSolveInfo report;
+      bool ok = false;
+      if (S.size() > 0) {
+        ok = symmetric_else_lu(S.matrix(), S.matrix(), true, B, X, report);
+      } else {
+        report.path = LinearSolvePath::LU;
+        ok = lu_solve(S.matrix(), B, X);
       }
-    }
-    if (!ok) {
-      report.path = LinearSolvePath::LU;
-      ok = lu_solve(S.matrix(), B, X);
-    }
-    if (ok) x = X.col(0);
-    if (info != nullptr) *info = report;
-    return ok;
+      if (info != nullptr) *info = report;
+      return ok;
+    });
   });
 }
 

@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 
+#include "elements/assemble.hpp"
+#include "elements/assembler.hpp"
 #include "elements/chamber_gas.hpp"
 #include "elements/chamber_surface.hpp"
 #include "solvers/linear_solve.hpp"
@@ -13,20 +15,17 @@ VolumeStiffness volume_stiffness(const Model& model, const State& state) {
   for (std::size_t c = 0; c < model.chambers.size(); ++c) {
     const ChamberDef& def = model.chambers[c];
     if (def.gas == GasModel::Prescribed) continue;
-    std::vector<Vec3> g;
-    const double V = surface_volume(state, def, &g);
-    const double slope = gas_pressure_slope(def, state.chambers[c], state.t, V, state.load_scale,
-                                            state.quasi_static);
+    const double slope =
+        gas_pressure_slope(def, state.chambers[c], state.t, surface_volume(state, def),
+                           state.load_scale, state.quasi_static);
     if (slope == 0) continue;
-    Eigen::VectorXd a = Eigen::VectorXd::Zero(model.num_dofs);
-    for (std::size_t i = 0; i < def.vertices.size(); ++i) {
-      const SurfaceVertex& v = def.vertices[i];
-      const int d = v.body < 0 ? -1 : model.dof_of_body[v.body];
-      if (d < 0) continue;
-      a.segment<3>(d) += g[i];
-      a.segment<3>(d + 3) += (state.R_WB[v.body] * v.x).cross(g[i]);
-    }
-    out.a.push_back(std::move(a));
+    // a = dV/dq: the generalized pressure force of one pascal.
+    BodyForces unit;
+    unit.f_W.assign(model.bodies.size(), Vec3::Zero());
+    unit.tau_W.assign(model.bodies.size(), Vec3::Zero());
+    Assembler as(model, state, unit, nullptr);
+    add_surface_pressure(state, def, 1.0, as);
+    out.a.push_back(generalized_forces(model, unit));
     out.k.push_back(-slope);
   }
   return out;
