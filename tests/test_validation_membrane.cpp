@@ -9,9 +9,13 @@
 #include <cmath>
 
 #include "elements/assemble.hpp"
+#include "elements/crease_law.hpp"
 #include "generators/pattern_sheet.hpp"
 #include "generators/sheet.hpp"
+#include "jacobian_test_util.hpp"
 #include "patterns/crease_pattern.hpp"
+#include "patterns/miura_pattern.hpp"
+#include "patterns/stack_pattern.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -134,6 +138,59 @@ TEST(MembraneCells, StripInTensionContractsByPoissonsRatio) {
   EXPECT_NEAR(eyy / exx, -kNu, 0.01 * kNu);
   ::testing::Test::RecordProperty("exx_over_closed_form", fmt::format("{:.6f}", exx / expected));
   ::testing::Test::RecordProperty("eyy_over_exx", fmt::format("{:.6f}", eyy / exx));
+}
+
+// The membrane cells' Jacobian, with the geometric terms of their turning frames and levers,
+// against central differences of the forces: a folded Miura sheet, every segment moved and
+// turned so that the membrane forces are large (strains of order 1e-2).
+TEST(MembraneCells, JacobianMatchesCentralDifferencesWhenStrained) {
+  MiuraSpec ms;
+  ms.rows = 2;
+  ms.columns = 2;
+  ms.fold_angle = 0.6;
+  PatternSheetSpec spec = sheet(2);
+  spec.mountain_law = std::make_shared<LinearCreaseLaw>(1e-3, 0.0);
+  spec.valley_law = spec.mountain_law;
+  const Model m = build_pattern_model(miura_crease_pattern(ms), spec);
+  ASSERT_FALSE(m.membrane_cells.empty());
+  State s = initial_state(m);
+  Eigen::VectorXd dq(m.num_dofs);
+  for (int i = 0; i < m.num_dofs; ++i) dq[i] = (i % 6 < 3 ? 2e-4 : 0.02) * std::sin(1.7 * i + 0.3);
+  apply_pose_increment(m, s, dq);
+  BodyForces f;
+  ForceJacobian jac;
+  jac.with_velocity = false;
+  compute_forces(m, s, f, &jac);
+  const Eigen::MatrixXd J(jac.dq);
+  Eigen::MatrixXd fd(m.num_dofs, m.num_dofs);
+  for (int c = 0; c < m.num_dofs; ++c) fd.col(c) = test::fd_pose_column(m, s, c, 1e-7);
+  const double scale = J.cwiseAbs().maxCoeff();
+  EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << "largest entry " << scale;
+}
+
+// Every cell's correction is positive semi-definite, so that joints plus corrections never
+// lose convexity: on a folded stack whose fold strips are cells 50 times longer than wide
+// next to square ones (each joint's energy shared between its cells by their part of the
+// centroid-to-centroid strip), on a Miura sheet and on a fan of triangles.
+TEST(MembraneCells, EveryCorrectionIsPositiveSemiDefinite) {
+  MiuraSpec ms;
+  ms.rows = 2;
+  ms.columns = 3;
+  PatternSheetSpec spec = sheet(3);
+  spec.mountain_law = std::make_shared<LinearCreaseLaw>(1e-3, 0.0);
+  spec.valley_law = spec.mountain_law;
+  for (const auto& [name, p] : {std::pair{"stack", folded_stack_pattern(3, 3, 5e-3, kT / 10)},
+                                {"miura", miura_crease_pattern(ms)},
+                                {"fan", square_fan()}}) {
+    const Model m = build_pattern_model(p, spec);
+    ASSERT_FALSE(m.membrane_cells.empty()) << name;
+    for (const MembraneCellDef& c : m.membrane_cells) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(c.Q);
+      EXPECT_GE(es.eigenvalues().minCoeff(), -1e-9 * es.eigenvalues().cwiseAbs().maxCoeff())
+          << name << " cell " << c.body;
+      EXPECT_GT(es.eigenvalues().maxCoeff(), 0) << name << " cell " << c.body;
+    }
+  }
 }
 
 }  // namespace

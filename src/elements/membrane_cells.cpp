@@ -19,67 +19,113 @@ Attachment attachment(const State& s, int body, const Vec3& c_B) {
   return {s.p_W[body] + r, r};
 }
 
-// d(x of an attachment point)/d(pose of its body): [I, -[r]x].
-Eigen::Matrix<double, 3, 6> point_motion(const Vec3& r) {
-  Eigen::Matrix<double, 3, 6> J;
-  J.leftCols<3>() = Mat3::Identity();
-  J.rightCols<3>() = -hat<double>(r);
+// One side of a cell at the current state: its two points, their separation u and the force
+// f = sign R_WB (m_k, 0) that the outer point takes (the inner one -f).
+struct SideNow {
+  int inner = -1, outer = -1;
+  Attachment a_in, a_out;
+  Vec3 u_W, f_W;
+};
+
+// The bodies a cell's forces reach (the cell first), as local indices into its Jacobian.
+class CellBodies {
+ public:
+  int local(int body) {
+    const auto it = std::find(bodies_.begin(), bodies_.end(), body);
+    if (it != bodies_.end()) return static_cast<int>(it - bodies_.begin());
+    bodies_.push_back(body);
+    return static_cast<int>(bodies_.size()) - 1;
+  }
+  int size() const { return static_cast<int>(bodies_.size()); }
+  int body(int i) const { return bodies_[i]; }
+  void clear() { bodies_.clear(); }
+
+ private:
+  std::vector<int> bodies_;
+};
+
+// d x / d pose of a point with lever r: [I, -[r]x] (world-frame rotation increments).
+void add_point_motion(Eigen::MatrixXd& D, int row, int col, const Vec3& r, double sign) {
+  D.block<3, 3>(row, col) += sign * Mat3::Identity();
+  D.block<3, 3>(row, col + 3) -= sign * hat<double>(r);
+}
+
+// The exact Jacobian of the cell's generalized forces (its own rows and those of every body
+// its sides join): the strain part -T^T Q T and the geometric part of the turning frames and
+// levers, so that Newton stays quadratic where membrane forces are comparable to soft creases.
+Eigen::MatrixXd cell_jacobian(const MembraneCellDef& cell, const Mat3& R_WB,
+                              const std::vector<SideNow>& now, CellBodies& cb) {
+  const int n = static_cast<int>(now.size()), c = 6 * cb.local(cell.body);
+  for (const SideNow& s : now) cb.local(s.inner), cb.local(s.outer);
+  const int nq = 6 * cb.size();
+  // T: d delta / d pose.
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(2 * n, nq);
+  std::vector<Eigen::MatrixXd> Du(n, Eigen::MatrixXd::Zero(3, nq));
+  for (int k = 0; k < n; ++k) {
+    const SideNow& s = now[k];
+    add_point_motion(Du[k], 0, 6 * cb.local(s.inner), s.a_in.r_W, 1);
+    add_point_motion(Du[k], 0, 6 * cb.local(s.outer), s.a_out.r_W, -1);
+    const Eigen::Matrix<double, 2, 3> read = cell.sides[k].sign * R_WB.transpose().topRows<2>();
+    T.middleRows<2>(2 * k) = read * Du[k];
+    T.block<2, 3>(2 * k, c + 3) += read * hat<double>(s.u_W);  // d(R^T u) = R^T [u]x dphi
+  }
+  const Eigen::MatrixXd QT = cell.Q * T;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nq, nq);
+  for (int k = 0; k < n; ++k) {
+    const SideNow& s = now[k];
+    const int i = 6 * cb.local(s.inner), o = 6 * cb.local(s.outer);
+    // df = -[f]x dphi_cell + sign R_WB (dm_k, 0).
+    Eigen::MatrixXd Df = cell.sides[k].sign * R_WB.leftCols<2>() * QT.middleRows<2>(2 * k);
+    Df.middleCols<3>(c + 3) -= hat<double>(s.f_W);
+    const Mat3 F = hat<double>(s.f_W);
+    J.middleRows<3>(i) -= Df;
+    J.middleRows<3>(i + 3) -= hat<double>(s.a_in.r_W) * Df;
+    J.block<3, 3>(i + 3, i + 3) -= F * hat<double>(s.a_in.r_W);
+    J.middleRows<3>(o) += Df;
+    J.middleRows<3>(o + 3) += hat<double>(s.a_out.r_W) * Df;
+    J.block<3, 3>(o + 3, o + 3) += F * hat<double>(s.a_out.r_W);
+    J.middleRows<3>(c + 3) += hat<double>(s.u_W) * Df - F * Du[k];
+  }
   return J;
 }
 
 }  // namespace
 
 void add_membrane_cells(const Model& model, const State& state, Assembler& as) {
-  std::vector<int> bodies;
+  CellBodies cb;
+  std::vector<SideNow> now;
   for (const MembraneCellDef& cell : model.membrane_cells) {
     const int n = static_cast<int>(cell.sides.size());
     const Mat3& R_WB = state.R_WB[cell.body];
-    std::vector<Attachment> inner(n), outer(n);
+    now.assign(n, SideNow{});
     Eigen::VectorXd delta(2 * n);
     for (int k = 0; k < n; ++k) {
       const ElementDef& e = model.elements[cell.sides[k].element];
-      inner[k] = attachment(state, e.inner, e.c_inner_B);
-      outer[k] = attachment(state, e.outer, e.c_outer_B);
-      const Vec3 u_W = inner[k].x_W - outer[k].x_W;
-      delta.segment<2>(2 * k) = cell.sides[k].sign * (R_WB.transpose() * u_W).head<2>();
+      SideNow& s = now[k];
+      s.inner = e.inner;
+      s.outer = e.outer;
+      s.a_in = attachment(state, e.inner, e.c_inner_B);
+      s.a_out = attachment(state, e.outer, e.c_outer_B);
+      s.u_W = s.a_in.x_W - s.a_out.x_W;
+      delta.segment<2>(2 * k) = cell.sides[k].sign * (R_WB.transpose() * s.u_W).head<2>();
     }
     const Eigen::VectorXd m = cell.Q * delta;
     as.add_energy(0.5 * delta.dot(m));
-    // dE/du_W of side k: f_k = sign R_WB (m_k, 0). The inner point takes -f_k, the outer +f_k,
-    // and the cell, whose frame reads u, the couple u x f_k.
+    // dE/du_W of side k is f_k: the inner point takes -f_k, the outer +f_k, and the cell,
+    // whose frame reads u, the couple u x f_k.
     for (int k = 0; k < n; ++k) {
-      const ElementDef& e = model.elements[cell.sides[k].element];
-      const Vec3 f = cell.sides[k].sign * (R_WB * Vec3(m[2 * k], m[2 * k + 1], 0));
-      as.add(e.inner, {Vec3(-f), inner[k].r_W.cross(-f)});
-      as.add(e.outer, {f, outer[k].r_W.cross(f)});
-      const Vec3 u_W = inner[k].x_W - outer[k].x_W;
-      as.add(cell.body, {Vec3::Zero(), u_W.cross(f)});
+      SideNow& s = now[k];
+      s.f_W = cell.sides[k].sign * (R_WB * Vec3(m[2 * k], m[2 * k + 1], 0));
+      as.add(s.inner, {Vec3(-s.f_W), s.a_in.r_W.cross(-s.f_W)});
+      as.add(s.outer, {s.f_W, s.a_out.r_W.cross(s.f_W)});
+      as.add(cell.body, {Vec3::Zero(), s.u_W.cross(s.f_W)});
     }
     if (!as.want_jacobian()) continue;
-    // d force / d pose = -T^T Q T, d delta = T d pose over the bodies the sides join.
-    bodies.clear();
-    auto local = [&bodies](int b) {
-      const auto it = std::find(bodies.begin(), bodies.end(), b);
-      if (it != bodies.end()) return static_cast<int>(it - bodies.begin());
-      bodies.push_back(b);
-      return static_cast<int>(bodies.size()) - 1;
-    };
-    for (const PlateCellSide& side : cell.sides) {
-      local(model.elements[side.element].inner);
-      local(model.elements[side.element].outer);
-    }
-    const int nb = static_cast<int>(bodies.size());
-    Eigen::MatrixXd T = Eigen::MatrixXd::Zero(2 * n, 6 * nb);
-    for (int k = 0; k < n; ++k) {
-      const ElementDef& e = model.elements[cell.sides[k].element];
-      const Eigen::Matrix<double, 2, 3> read = cell.sides[k].sign * R_WB.transpose().topRows<2>();
-      T.block<2, 6>(2 * k, 6 * local(e.inner)) += read * point_motion(inner[k].r_W);
-      T.block<2, 6>(2 * k, 6 * local(e.outer)) -= read * point_motion(outer[k].r_W);
-    }
-    const Eigen::MatrixXd K = -T.transpose() * cell.Q * T;
-    for (int a = 0; a < nb; ++a) {
-      for (int b = 0; b < nb; ++b)
-        as.add_pose_block(bodies[a], bodies[b], K.block<6, 6>(6 * a, 6 * b));
+    cb.clear();
+    const Eigen::MatrixXd J = cell_jacobian(cell, R_WB, now, cb);
+    for (int a = 0; a < cb.size(); ++a) {
+      for (int b = 0; b < cb.size(); ++b)
+        as.add_pose_block(cb.body(a), cb.body(b), J.block<6, 6>(6 * a, 6 * b));
     }
   }
 }

@@ -10,9 +10,7 @@ namespace finseg {
 
 class Assembler;
 
-/// Adds every membrane cell's forces and energy; with the Jacobian, its blocks for small
-/// strains (the turning of the cell frame, which multiplies the translations, is not
-/// differentiated).
+/// Adds every membrane cell's forces and energy and, when asked, their exact Jacobian blocks.
 void add_membrane_cells(const Model& model, const State& state, Assembler& as);
 
 }  // namespace finseg

@@ -194,9 +194,12 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
     g.crease = e.crease >= 0;
     g.crease_bends = g.crease && crease_bends;
     g.across_M = mine.across;
+    const double own = std::abs(mine.across.dot(mine.P - c_M)),
+                 other = std::abs(theirs.across.dot(o_M - theirs.P));
+    g.strip_share = own / (own + other);
     if (m.bodies[o].fixed) {
       g.d_M = mine.across.dot(mine.P - c_M) * mine.across;
-      g.share = 1;
+      g.share = g.strip_share = 1;
     } else if (l.seam < 0) {
       g.d_M = o_M - c_M;
     } else {
@@ -207,29 +210,63 @@ void add_cell_sides(const CellLink& l, const std::array<SideInCell, 2>& sides, c
   }
 }
 
-// The free cells' membrane corrections (docs/stiffness.md, "Cell membrane correction"), from
-// the same side geometry as the curvature corrections and the joints' T1 (across) and T2
-// (along) springs.
+// A free cell's sides for the membrane correction: the curvature correction's geometry and
+// the joints' T1 (across) and T2 (along) springs.
+std::vector<MembraneSideGeometry> membrane_sides(const Model& m,
+                                                 const std::vector<CellSideGeometry>& sides) {
+  std::vector<MembraneSideGeometry> out;
+  for (const CellSideGeometry& g : sides) {
+    const ElementDef& e = m.elements[g.side.element];
+    const Vec2 a = g.across_M, t(-a.y(), a.x());
+    MembraneSideGeometry ms;
+    ms.side = g.side;
+    ms.d_M = g.d_M;
+    ms.share = g.strip_share;
+    ms.K_M = e.K[0] * a * a.transpose() + e.K[1] * t * t.transpose();
+    out.push_back(ms);
+  }
+  return out;
+}
+
+bool has_membrane_correction(const Model& m, const std::vector<CellSideGeometry>& sides, int c) {
+  return !m.bodies[c].fixed && !sides.empty();
+}
+
+// On skewed cells the joints see the strain along their sides too and can store more than
+// plane stress in some strain: the in-plane springs of each joint are scaled down by the
+// larger excess of its two cells, so that no correction has to be negative (convexity).
+void limit_joints_to_plane_stress(Model& m,
+                                  const std::vector<std::vector<CellSideGeometry>>& cell_sides,
+                                  const PatternSheetSpec& spec) {
+  std::vector<double> scale(m.elements.size(), 1.0);
+  for (std::size_t c = 0; c < cell_sides.size(); ++c) {
+    if (!has_membrane_correction(m, cell_sides[c], static_cast<int>(c))) continue;
+    const double excess =
+        membrane_joint_excess(segment_area(m.bodies[c]), membrane_sides(m, cell_sides[c]),
+                              spec.youngs_modulus, spec.poisson_ratio, spec.thickness);
+    if (excess <= 1 + 1e-9) continue;  // rectangles: 1 up to round-off
+    for (const CellSideGeometry& g : cell_sides[c]) {
+      scale[g.side.element] = std::min(scale[g.side.element], 1 / excess);
+    }
+  }
+  for (std::size_t k = 0; k < m.elements.size(); ++k) {
+    for (int i : {0, 1}) {
+      m.elements[k].K[i] *= scale[k];
+      m.elements[k].C[i] *= scale[k];
+    }
+  }
+}
+
+// The free cells' membrane corrections (docs/stiffness.md, "Cell membrane correction").
 std::vector<MembraneCellDef> membrane_cells(
     const Model& m, const std::vector<std::vector<CellSideGeometry>>& cell_sides,
     const PatternSheetSpec& spec) {
   std::vector<MembraneCellDef> cells;
   for (std::size_t c = 0; c < cell_sides.size(); ++c) {
-    if (m.bodies[c].fixed || cell_sides[c].empty()) continue;
-    std::vector<MembraneSideGeometry> sides;
-    for (const CellSideGeometry& g : cell_sides[c]) {
-      const ElementDef& e = m.elements[g.side.element];
-      const Vec2 a = g.across_M, t(-a.y(), a.x());
-      MembraneSideGeometry ms;
-      ms.side = g.side;
-      ms.d_M = g.d_M;
-      ms.share = g.share;
-      ms.K_M = e.K[0] * a * a.transpose() + e.K[1] * t * t.transpose();
-      sides.push_back(ms);
-    }
-    cells.push_back(membrane_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]), sides,
-                                             spec.youngs_modulus, spec.poisson_ratio,
-                                             spec.thickness));
+    if (!has_membrane_correction(m, cell_sides[c], static_cast<int>(c))) continue;
+    cells.push_back(membrane_cell_correction(static_cast<int>(c), segment_area(m.bodies[c]),
+                                             membrane_sides(m, cell_sides[c]), spec.youngs_modulus,
+                                             spec.poisson_ratio, spec.thickness));
   }
   return cells;
 }
@@ -250,8 +287,10 @@ Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
   const double G = E / (2 * (1 + nu)), D = E * t * t * t / (12 * (1 - nu * nu));
   Vec6 k;
   // Twist and bending both D: the joints then store D/2 kappa:kappa, Kirchhoff's energy less
-  // the null Lagrangian D nu det(kappa) (docs/stiffness.md).
-  k << E * t * l / h, G * t * l / h, kShearCorrection * G * t * l / h, D * l / h, D * l / h,
+  // the null Lagrangian D nu det(kappa) (docs/stiffness.md). T1 = 2 G t l / h, the deviatoric
+  // part of plane stress, so that what the cells' membrane corrections add (the volumetric
+  // part) is never negative.
+  k << 2 * G * t * l / h, G * t * l / h, kShearCorrection * G * t * l / h, D * l / h, D * l / h,
       E * t * l * l * l / (12 * h);
   return k;
 }
@@ -365,6 +404,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   const double D =
       spec.bending_rigidity.value_or(spec.youngs_modulus * std::pow(spec.thickness, 3) /
                                      (12 * (1 - spec.poisson_ratio * spec.poisson_ratio)));
+  limit_joints_to_plane_stress(m, cell_sides, spec);
   m.membrane_cells = membrane_cells(m, cell_sides, spec);
   if (hessian) {
     m.plate_cells = plate_hessian_cells(mesh, m, link_element, D, spec.poisson_ratio);

@@ -94,24 +94,47 @@ PlateCellDef plate_cell_correction(int body, double area,
   return cell;
 }
 
+namespace {
+
+// The joints' energy per uniform strain, 1/2 e^T M e, and plane stress's A C.
+Mat3 membrane_joint_energy(const std::vector<MembraneSideGeometry>& sides) {
+  Mat3 M = Mat3::Zero();
+  for (const MembraneSideGeometry& s : sides) {
+    const Mat23 B = displacement_of_strain(s.d_M);
+    M += s.share * B.transpose() * s.K_M * B;
+  }
+  return M;
+}
+
+Mat3 plane_stress(double area, double E, double nu, double t) {
+  Mat3 C;  // engineering shear
+  C << 1, nu, 0, nu, 1, 0, 0, 0, 0.5 * (1 - nu);
+  return area * E * t / (1 - nu * nu) * C;
+}
+
+}  // namespace
+
+double membrane_joint_excess(double area, const std::vector<MembraneSideGeometry>& sides, double E,
+                             double nu, double t) {
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Mat3> ges(membrane_joint_energy(sides),
+                                                           plane_stress(area, E, nu, t));
+  return ges.eigenvalues().maxCoeff();
+}
+
 MembraneCellDef membrane_cell_correction(int body, double area,
                                          const std::vector<MembraneSideGeometry>& sides, double E,
                                          double nu, double t) {
   MembraneCellDef cell;
   cell.body = body;
-  Mat3 G = Mat3::Zero(), M = Mat3::Zero();
+  Mat3 G = Mat3::Zero();
   Eigen::MatrixXd W(3, 2 * sides.size());
   for (std::size_t k = 0; k < sides.size(); ++k) {
     const Mat23 B = displacement_of_strain(sides[k].d_M);
-    const Mat3 BKB = B.transpose() * sides[k].K_M * B;
-    G += BKB;
-    M += sides[k].share * BKB;
+    G += B.transpose() * sides[k].K_M * B;
     W.middleCols<2>(2 * k) = B.transpose() * sides[k].K_M;
     cell.sides.push_back(sides[k].side);
   }
-  Mat3 C;  // plane stress, engineering shear
-  C << 1, nu, 0, nu, 1, 0, 0, 0, 0.5 * (1 - nu);
-  cell.Q = fitted_correction(area * E * t / (1 - nu * nu) * C - M, G, W);
+  cell.Q = fitted_correction(plane_stress(area, E, nu, t) - membrane_joint_energy(sides), G, W);
   return cell;
 }
 

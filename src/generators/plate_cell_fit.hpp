@@ -15,6 +15,9 @@ struct CellSideGeometry {
                             ///< foot point), m
   double weight = 0;        ///< the joint's rotational stiffness about both in-plane axes, N m
   double share = 0.5;       ///< part of the joint's energy that is this cell's (1 at a clamp)
+  /// Part of the joint's strip (centroid to centroid across the side) inside this cell:
+  /// d_own / (d_own + d_other), 1 at a clamp. The membrane correction's share.
+  double strip_share = 0.5;
   /// A crease side: its fold is the crease law's, so it is no measurement of the curvature;
   /// only its twist spring (about `across_M`, the side's normal) counts in the joints' energy.
   bool crease = false;
@@ -37,7 +40,8 @@ struct MembraneSideGeometry {
   PlateCellSide side;       ///< element and sign (+1: the cell is the element's outer body)
   Vec2 d_M = Vec2::Zero();  ///< as CellSideGeometry::d_M, m
   Eigen::Matrix2d K_M = Eigen::Matrix2d::Zero();  ///< joint's in-plane stiffness, cell axes, N/m
-  double share = 0.5;  ///< part of the joint's energy that is this cell's (1 at a clamp)
+  double share =
+      0.5;  ///< part of the joint's energy that is this cell's: CellSideGeometry::strip_share
 };
 
 /// Q such that, for every uniform in-plane strain, joints plus correction store the plane-
@@ -48,5 +52,11 @@ struct MembraneSideGeometry {
 MembraneCellDef membrane_cell_correction(int body, double area,
                                          const std::vector<MembraneSideGeometry>& sides, double E,
                                          double nu, double t);
+
+/// The largest ratio, over uniform strains, of the energy the cell's joints store to the
+/// plane-stress energy (C as above): 1 on rectangles (pure shear at 45 deg), above 1 on skewed
+/// cells, whose joints also see the strain along their sides.
+double membrane_joint_excess(double area, const std::vector<MembraneSideGeometry>& sides, double E,
+                             double nu, double t);
 
 }  // namespace finseg

@@ -117,6 +117,21 @@ bool shifted_newton_step(const Eigen::SparseMatrix<double>& K, const Eigen::Vect
 // to the path the slow pull follows, to give it up and cut the increment.
 constexpr double kStallDrop = 0.03;
 
+// A Newton step may carry a plate through another before their contact switches on; the
+// equilibrium found then holds them interpenetrating. Two plates overlapping by more than half
+// the thinner one's thickness are taken as such and the increment is cut.
+bool tunnelled(const Model& model, const State& state) {
+  if (!model.contact.enabled) return false;
+  for (const ContactPairForce& p : contact_summary(model, state).pairs) {
+    const double thinner = std::min(model.bodies[p.a].thickness, model.bodies[p.b].thickness);
+    if (p.max_penetration > 0.5 * thinner) return true;
+  }
+  return false;
+}
+
+// A Newton trial turning a body by more than this (rad) is checked for tunnelling.
+constexpr double kLongTurn = 0.1;
+
 // Newton from the current state at the current load scale and drive positions; with
 // stall_iteration > 0 it gives up when stalled (kStallDrop).
 bool solve_equilibrium(const Model& model, State& state, const SolverSettings& settings,
@@ -166,10 +181,11 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
       return true;
     }
     // Limit the step so that no rotation jumps by more than 1 rad in one iteration.
-    double alpha = 1.0;
+    double largest_turn = 0;
     for (int i = 0; i + 5 < dq.size(); i += 6) {
-      alpha = std::min(alpha, 1.0 / std::max(dq.segment<3>(i + 3).norm(), 1e-300));
+      largest_turn = std::max(largest_turn, dq.segment<3>(i + 3).norm());
     }
+    double alpha = std::min(1.0, 1.0 / std::max(largest_turn, 1e-300));
     // Backtracking: accept a sufficient decrease of the potential energy (the natural merit
     // for conservative structures) or of the residual (follower loads, indefinite K).
     // Dead moments have no potential, but along this line each body turns about a fixed
@@ -205,20 +221,14 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
       accepted = acceptable(alpha) ||
                  (stall_iteration == 0 && solve_translations(model, state, trial, stats) &&
                   acceptable(alpha));
+      // Neither merit sees a plate carried through another before their contact switched on
+      // (a soft mode where contacts start at zero depth: a Newton step of hundreds of rad,
+      // cut to 1 rad above). Checked for long steps only, whose trials can jump a layer.
+      if (accepted && alpha * largest_turn > kLongTurn && tunnelled(model, state)) {
+        accepted = false;
+      }
     }
     if (!accepted) state = best;
-  }
-  return false;
-}
-
-// A Newton step may carry a plate through another before their contact switches on; the
-// equilibrium found then holds them interpenetrating. Two plates overlapping by more than half
-// the thinner one's thickness are taken as such and the increment is cut.
-bool tunnelled(const Model& model, const State& state) {
-  if (!model.contact.enabled) return false;
-  for (const ContactPairForce& p : contact_summary(model, state).pairs) {
-    const double thinner = std::min(model.bodies[p.a].thickness, model.bodies[p.b].thickness);
-    if (p.max_penetration > 0.5 * thinner) return true;
   }
   return false;
 }
