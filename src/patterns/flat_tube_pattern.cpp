@@ -33,6 +33,10 @@ void check_spec(const FlatTubeSpec& s) {
   if (!(s.length > 0 && std::isfinite(s.length))) {
     refuse("length", fmt::format("{} m; must be > 0", s.length));
   }
+  if (!(s.seal_length > 0 && 2 * s.seal_length < s.length)) {
+    refuse("seal_length",
+           fmt::format("{} m; allowed (0, length / 2 = {} m)", s.seal_length, s.length / 2));
+  }
 }
 
 // Makes a face counter-clockwise in the flat coordinates.
@@ -51,8 +55,9 @@ std::vector<int> ccw(const CreasePattern& p, std::vector<int> f) {
 CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
   check_spec(s);
   const int k = s.layer_facets, N = 2 * k + 2, R = s.rows;
-  const double W = s.width, h = s.gap, w = W / k, dy = s.length / R;
-  const double seal = std::sqrt(dy * dy + h * h / 4);  // a seal row's development length
+  const double W = s.width, h = s.gap, w = W / k, dy = (s.length - 2 * s.seal_length) / (R - 2);
+  // A seal row's development length: its layers fall by gap / 2 over seal_length.
+  const double seal = std::sqrt(s.seal_length * s.seal_length + h * h / 4);
   CreasePattern p;
   p.meta.file_creator = "finseg";
   p.meta.frame_title = fmt::format("lay-flat tube of {} + {} facets x {} rows", k, k, R);
@@ -74,12 +79,15 @@ CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
   auto Y = [&](int i) {
     return i == 0 ? 0.0 : i == R ? 2 * seal + (R - 2) * dy : seal + (i - 1) * dy;
   };
+  auto y_axial = [&](int i) {
+    return i == 0 ? 0.0 : i == R ? s.length : s.seal_length + (i - 1) * dy;
+  };
   auto id = [&](int i, int j) { return i * (N + 1) + j; };
   for (int i = 0; i <= R; ++i) {
     const bool end = i == 0 || i == R;  // the seal line: both layers at z = 0
     for (int j = 0; j <= N; ++j) {
       p.vertices_flat_m.emplace_back(X[j], Y(i));
-      p.vertices_folded_m.emplace_back(xz[j].x(), i * dy, end ? 0.0 : xz[j].y());
+      p.vertices_folded_m.emplace_back(xz[j].x(), y_axial(i), end ? 0.0 : xz[j].y());
     }
   }
   // The gussets' columns (between lines a and a + 1) and their end-edge middles M.
@@ -90,7 +98,7 @@ CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
       middle[{i, a}] = static_cast<int>(p.vertices_flat_m.size());
       p.vertices_flat_m.emplace_back((X[a] + X[a + 1]) / 2, Y(i));
       const double out = a == k ? W / 2 + h / 2 : -W / 2 - h / 2;
-      p.vertices_folded_m.emplace_back(out, i * dy, 0.0);
+      p.vertices_folded_m.emplace_back(out, y_axial(i), 0.0);
     }
   }
   for (int r = 0; r < R; ++r) {
@@ -166,8 +174,8 @@ std::vector<int> flat_tube_row_faces(const FlatTubeSpec& s, int row) {
 }
 
 double flat_tube_volume(const FlatTubeSpec& s) {
-  const double dy = s.length / s.rows;
-  return s.gap * dy * (s.width * (s.rows - 2) + 2 * (s.width / 2 + s.gap / 6));
+  const double straight = s.length - 2 * s.seal_length;
+  return s.gap * (s.width * straight + 2 * s.seal_length * (s.width / 2 + s.gap / 6));
 }
 
 double flat_tube_round_area(const FlatTubeSpec& s) {

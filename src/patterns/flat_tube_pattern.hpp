@@ -16,6 +16,9 @@ struct FlatTubeSpec {
   double width = 0.05;   ///< flattened width of each layer, m
   double gap = 5e-4;     ///< the layers' distance apart = the gussets' height, m, (0, width)
   double length = 0.3;   ///< axial length, seals included, m
+  /// Axial length of each seal row, m, (0, length / 2): short (a few gaps) so that the
+  /// gussets' seal triangles, gap / 2 wide, are not slivers.
+  double seal_length = 2e-3;
 };
 
 /// The pattern. Development: columns along x, around the section: the top layer's facets
@@ -41,7 +44,7 @@ std::vector<int> flat_tube_row_faces(const FlatTubeSpec& s, int row);
 /// Volume enclosed by the flattened tube, m^3: the straight rows' rectangle width x gap,
 /// and each seal row a wedge whose section at s (0 at its inner edge, 1 at the end) is the
 /// rectangle 2 g x (width + gap - 2 g), g = gap (1 - s) / 2:
-///   gap dy (width (rows - 2) + 2 (width / 2 + gap / 6)),  dy = length / rows.
+///   gap (width (length - 2 seal_length) + 2 seal_length (width / 2 + gap / 6)).
 double flat_tube_volume(const FlatTubeSpec& s);
 
 /// The deployed section: the cyclic polygon (the largest area of the linkage, which a
