@@ -61,21 +61,30 @@ CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
   CreasePattern p;
   p.meta.file_creator = "finseg";
   p.meta.frame_title = fmt::format("lay-flat tube of {} + {} facets x {} rows", k, k, R);
-  // Column lines around the section: x in the development, (x, z) of the flattened tube.
-  std::vector<double> X(N + 1);
+  // Section corners around the tube from the top-left one: the top layer (+x), the right
+  // gusset, the bottom layer (-x), the left gusset; corner q's column (q to q + 1) is a
+  // gusset for q = k and 2 k + 1, else a facet. The development starts at corner `first`,
+  // the middle of the bottom layer, so that the seam along the tube is a flat joint between
+  // two bottom facets rather than one of the section's corners.
+  auto corner = [&](int q) {
+    q %= N;
+    return q <= k           ? Vec2(-W / 2 + q * w, h / 2)
+           : q <= 2 * k + 1 ? Vec2(W / 2 - (q - k - 1) * w, -h / 2)
+                            : Vec2(-W / 2, h / 2);  // not reached: q < N
+  };
+  const int first = k + 1 + k / 2;
+  auto is_gusset = [&](int c) {  // development column c
+    const int q = (c + first) % N;
+    return q == k || q == 2 * k + 1;
+  };
+  std::vector<double> X(N + 1, 0.0);
   std::vector<Vec2> xz(N + 1);
   for (int j = 0; j <= N; ++j) {
-    if (j <= k) {  // top layer, +x
-      X[j] = j * w;
-      xz[j] = Vec2(-W / 2 + j * w, h / 2);
-    } else if (j <= 2 * k + 1) {  // bottom layer, -x, after the right gusset
-      X[j] = W + h + (j - k - 1) * w;
-      xz[j] = Vec2(W / 2 - (j - k - 1) * w, -h / 2);
-    } else {  // back to the top-left corner over the left gusset
-      X[j] = 2 * W + 2 * h;
-      xz[j] = xz[0];
-    }
+    xz[j] = corner(j + first);
+    if (j > 0) X[j] = X[j - 1] + (is_gusset(j - 1) ? h : w);
   }
+  // Development column of corner column q.
+  auto column = [&](int q) { return ((q - first) % N + N) % N; };
   auto Y = [&](int i) {
     return i == 0 ? 0.0 : i == R ? 2 * seal + (R - 2) * dy : seal + (i - 1) * dy;
   };
@@ -91,13 +100,13 @@ CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
     }
   }
   // The gussets' columns (between lines a and a + 1) and their end-edge middles M.
-  const std::array<int, 2> gusset{k, 2 * k + 1};
+  const std::array<int, 2> gusset{column(k), column(2 * k + 1)};
   std::map<std::pair<int, int>, int> middle;  // (end row line, gusset column) -> vertex
   for (int i : {0, R}) {
     for (int a : gusset) {
       middle[{i, a}] = static_cast<int>(p.vertices_flat_m.size());
       p.vertices_flat_m.emplace_back((X[a] + X[a + 1]) / 2, Y(i));
-      const double out = a == k ? W / 2 + h / 2 : -W / 2 - h / 2;
+      const double out = a == gusset[0] ? W / 2 + h / 2 : -W / 2 - h / 2;
       p.vertices_folded_m.emplace_back(out, y_axial(i), 0.0);
     }
   }
@@ -149,9 +158,9 @@ CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s) {
   for (int i = 0; i < R; ++i)
     p.seams.push_back({edge(id(i, 0), id(i + 1, 0)), edge(id(i, N), id(i + 1, N))});
   for (int i : {0, R}) {
-    for (int j = 0; j < k; ++j) {
-      p.seams.push_back(
-          {edge(id(i, j), id(i, j + 1)), edge(id(i, 2 * k + 1 - j), id(i, 2 * k - j))});
+    for (int j = 0; j < k; ++j) {  // top facet j over bottom facet k - 1 - j
+      const int top = column(j), bottom = column(2 * k - j);
+      p.seams.push_back({edge(id(i, top), id(i, top + 1)), edge(id(i, bottom), id(i, bottom + 1))});
     }
     for (int a : gusset) {
       const int m = middle[{i, a}];
