@@ -21,24 +21,24 @@ struct FlatTubeSpec {
   double seal_length = 2e-3;
 };
 
-/// The pattern. Development: columns along x, around the section: the top layer's facets
-/// (width / layer_facets each, +x), the right gusset (gap), the bottom layer's facets (-x),
-/// the left gusset, the last column's free edge seamed to the first's along the tube; rows
-/// along y. Folded: axis +y from y = 0, top layer at z = +gap / 2, bottom at -gap / 2,
-/// gussets at x = +-width / 2, flat +z outwards. In the first and last rows (the seals) the
-/// layers meet at z = 0 on the end line, the gussets fold outwards in half there (each seal
-/// cell of a gusset three triangles about the middle M of its end edge) so that the seal line
-/// is width + gap long, and the layers' and gussets' end edges are seamed to each other.
-/// Every edge between two faces that is not a row line of the straight part is a crease: the
-/// columns' lines mountains (flat, 0, between a layer's facets: the corners of the rounded
-/// section), the rest by the sign of the measured fold angle. Faces: row r, column c is face
-/// r (2 layer_facets + 2) + c for the quadrilaterals of rows 1 .. rows - 2 and of the layers
-/// in the seal rows; each seal row's gusset cells are three triangles after the row's
-/// quadrilaterals. Throws InputError("<api>", field, ...) out of range.
+/// The pattern. Section corners, going round with the flat sheet's +z outwards: the top
+/// layer's facets (width / layer_facets each, +x), the right gusset (gap), the bottom layer's
+/// facets (-x), the left gusset. Development: these columns along x, starting in the middle of
+/// the bottom layer (the seam along the tube, last column onto first, is then a flat joint),
+/// rows along y. Folded: axis +y from y = 0, top layer at z = +gap / 2, bottom at -gap / 2,
+/// gussets at x = +-width / 2. In the first and last rows (the seals, seal_length along the
+/// axis) the layers meet at z = 0 on the end line, the gussets fold outwards in half there
+/// (each seal cell of a gusset three triangles about the middle M of its end edge) so that
+/// the seal line is width + gap long, and the layers' and gussets' end edges are seamed to
+/// each other. Creases: the section's corner lines are mountains (flat, 0, between a layer's
+/// facets; -90 degrees at the gussets), the seal rows' other lines by the sign of the measured
+/// angle; straight rows meet at joins (J). Faces row by row, each row's columns in
+/// development order, a seal row's gusset cells three triangles each (flat_tube_row_faces).
+/// Throws InputError("<api>", field, ...) for a spec out of range.
 CreasePattern flat_tube_crease_pattern(const FlatTubeSpec& s);
 
-/// Faces of seal row `row` (0 or rows - 1), or of straight row `row`, in order: the 0-based
-/// face indices of the row.
+/// The 0-based faces of row `row` (0 .. rows - 1): 2 layer_facets + 2 in a straight row,
+/// 2 layer_facets + 6 in a seal row (0 and rows - 1).
 std::vector<int> flat_tube_row_faces(const FlatTubeSpec& s, int row);
 
 /// Volume enclosed by the flattened tube, m^3: the straight rows' rectangle width x gap,
