@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cli_test_util.hpp"
+#include "patterns/flat_tube_pattern.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/tube_pattern.hpp"
 #include "scene/scene_reader.hpp"
@@ -100,6 +101,66 @@ TEST(ExampleTube, InflationSceneReadsAndRunsAgainstAdiabaticFilling) {
   EXPECT_LT(g.work, 1e-3 * c.gamma / (c.gamma - 1) * c.gas_constant * t_in * g.injected);
   EXPECT_NEAR(g.temperature / (c.gamma * t_in), 1, 2e-3);
   EXPECT_NEAR(g.pressure, g.mass * c.gas_constant * g.temperature / g.volume, 1e-9 * g.pressure);
+}
+
+// `finseg pattern tube --flat GAP` writes the lay-flat tube (counts from the construction,
+// below); its options refused with exit 2 naming the option.
+TEST(ExampleTube, CliWritesTheLayFlatTubeAndRefusesBadOptions) {
+  test::TempDir dir;
+  test::CliResult r = test::run_finseg(dir,
+                                       "pattern tube --flat 1e-3 --facets 3 --width 0.03 --rows 4 "
+                                       "--length 0.1 --seal-length 2e-3 --out f.fold");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = test::run_finseg(dir, "pattern check f.fold");
+  EXPECT_EQ(r.code, 0) << r.err;
+  // N = 2 x 3 + 2 = 8 columns: vertices 5 x 9 + 4 seal middles = 49; faces 2 x 8 straight +
+  // 2 x (6 + 6) seal = 40.
+  EXPECT_NE(r.out.find("49 vertices, 40 faces"), std::string::npos) << r.out;
+  for (const char* bad :
+       {"--flat 1e-3 --facets 1", "--flat 1e-3 --rows 2", "--flat 0.02 --width 0.04 --facets 4",
+        "--flat -1", "--flat 1e-3 --seal-length 0.3 --length 0.4", "--flat 1e-3 --width 0",
+        "--flat 1e-3 --radius 0.1", "--flat 1e-3 --fold-angle 30", "--width 0.1"}) {
+    r = test::run_finseg(dir, std::string("pattern tube ") + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    std::string option = std::string(bad);
+    // The option named is the last one given (the one out of range), --flat for the gap.
+    option = option.substr(option.rfind("--"));
+    option = option.substr(0, option.find(' '));
+    if (std::string(bad).find("--flat 0.02") == 0 || std::string(bad) == "--flat -1") {
+      option = "--flat";
+    }
+    if (std::string(bad).find("--seal-length") != std::string::npos) option = "--seal-length";
+    EXPECT_NE(r.err.find("<cli>: " + option), std::string::npos) << bad << ": " << r.err;
+  }
+}
+
+// The lay-flat inflation scene, 0.2 ms: its chamber's volume at the start is the flattened
+// tube's closed form (flat_tube_volume), and the gas filled from vacuum by an adiabatic
+// inflator at T_in is at T = gamma T_in while the walls have barely moved (as above).
+TEST(ExampleTube, LayFlatInflationSceneReadsAndRunsAgainstAdiabaticFilling) {
+  Scene scene = read_scene(example("flat_inflate.yaml"));
+  ASSERT_EQ(scene.model.chambers.size(), 1u);
+  const ChamberDef& c = scene.model.chambers[0];
+  FlatTubeSpec spec;  // the scene's pattern: flat.fold
+  spec.layer_facets = 4;
+  spec.rows = 10;
+  spec.width = 0.04;
+  spec.gap = 1e-3;
+  spec.length = 0.2;
+  spec.seal_length = 2e-3;
+  State s = initial_state(scene.model);
+  EXPECT_NEAR(s.chambers[0].volume / flat_tube_volume(spec), 1, 1e-12);
+  scene.solver.t_end = 2e-4;
+  scene.solver.output_interval = 2e-4;
+  const SolverStats st = run_solver(scene.model, s, scene.solver, nullptr);
+  ASSERT_EQ(st.status, "ok") << st.message;
+  const ChamberGas& g = s.chambers[0];
+  const double t = scene.solver.t_end, t_ramp = c.inflow.at[1], mdot = c.inflow.mass_flow[1];
+  ASSERT_LT(t, t_ramp);
+  EXPECT_NEAR(g.injected, mdot * t * t / (2 * t_ramp), 1e-12 * mdot * t);
+  EXPECT_LT(g.work,
+            1e-2 * c.gamma / (c.gamma - 1) * c.gas_constant * c.inflow.temperature[1] * g.injected);
+  EXPECT_NEAR(g.temperature / (c.gamma * c.inflow.temperature[1]), 1, 1e-2);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
 #include "core/text.hpp"
+#include "patterns/flat_tube_pattern.hpp"
 #include "patterns/fold_format.hpp"
 #include "patterns/tube_pattern.hpp"
 #include "patterns/zigzag_pattern.hpp"
@@ -100,44 +101,110 @@ void register_zigzag(CLI::App* pattern) {
   });
 }
 
+// --flat: the lay-flat tube (flat_tube_crease_pattern); --facets is then per layer.
+CreasePattern flat_tube_from_options(int facets, int rows, double length, double gap, double width,
+                                     double seal_length) {
+  if (facets < 2 || facets > 256) {
+    throw InputError("<cli>", "--facets", fmt::format("{}; with --flat 2..256 per layer", facets));
+  }
+  if (rows < 3 || rows > 10000) {
+    throw InputError("<cli>", "--rows", fmt::format("{}; with --flat 3..10000", rows));
+  }
+  require_positive(length, "<cli>", "--length", "m");
+  require_positive(width, "<cli>", "--width", "m");
+  if (!(gap > 0 && gap < width / facets)) {
+    throw InputError(
+        "<cli>", "--flat",
+        fmt::format("{} m; allowed (0, --width / --facets = {} m)", gap, width / facets));
+  }
+  if (!(seal_length > 0 && 2 * seal_length < length)) {
+    throw InputError(
+        "<cli>", "--seal-length",
+        fmt::format("{} m; allowed (0, --length / 2 = {} m)", seal_length, length / 2));
+  }
+  FlatTubeSpec s;
+  s.layer_facets = facets;
+  s.rows = rows;
+  s.width = width;
+  s.gap = gap;
+  s.length = length;
+  s.seal_length = seal_length;
+  return flat_tube_crease_pattern(s);
+}
+
 void register_tube(CLI::App* pattern) {
   struct Options {
     int facets = 12, rows = 8;
     double radius = 0.025, length = 0.4, fold_angle_deg = 0;
+    double gap = 0, width = 0.04, seal_length = 2e-3;
     bool caps = false;
     std::string out;
   };
   auto o = std::make_shared<Options>();
   CLI::App* c = pattern->add_subcommand(
       "tube", "a tube rolled from a rectangle (seamed), optionally with Z-fold creases, as FOLD");
-  c->add_option("--facets", o->facets, "flat facets around the circumference (>= 3)");
-  c->add_option("--rows", o->rows, "rows along the length (>= 1; >= 2 with --fold-angle)");
-  c->add_option("--radius", o->radius, "corner radius, m");
+  c->add_option("--facets", o->facets,
+                "flat facets around the circumference (>= 3); with --flat: per layer (>= 2)");
+  c->add_option("--rows", o->rows,
+                "rows along the length (>= 1; >= 2 with --fold-angle; >= 3 with --flat, the "
+                "first and last the seals)");
+  CLI::Option* radius = c->add_option("--radius", o->radius, "corner radius, m");
   c->add_option("--length", o->length, "m");
-  c->add_option("--fold-angle", o->fold_angle_deg,
-                "Z-fold: largest fold angle of the inner row lines, deg in [-180, 180] (0: a "
-                "straight tube, rows joined)");
-  c->add_flag("--caps", o->caps,
-              "close both ends by N-gon caps glued on by seams (always with --fold-angle; the "
-              "rows then meet at flat creases where the fold angle is 0)");
+  CLI::Option* fold =
+      c->add_option("--fold-angle", o->fold_angle_deg,
+                    "Z-fold: largest fold angle of the inner row lines, deg in [-180, 180] (0: a "
+                    "straight tube, rows joined)");
+  CLI::Option* caps =
+      c->add_flag("--caps", o->caps,
+                  "close both ends by N-gon caps glued on by seams (always with --fold-angle; the "
+                  "rows then meet at flat creases where the fold angle is 0)");
+  CLI::Option* flat = c->add_option(
+      "--flat", o->gap,
+      "GAP, m: the lay-flat tube instead, stowed flattened (two layers of --facets facets "
+      "GAP apart, joined by side gussets GAP high) and closed at both ends by flat seals "
+      "(docs/fold.md, The lay-flat tube); (0, --width / --facets)");
+  CLI::Option* width =
+      c->add_option("--width", o->width, "with --flat: each layer's flattened width, m")
+          ->capture_default_str();
+  CLI::Option* seal = c->add_option("--seal-length", o->seal_length,
+                                    "with --flat: axial length of each seal row, m, "
+                                    "(0, --length / 2)")
+                          ->capture_default_str();
   c->add_option("--out", o->out, "write the FOLD file to FILE instead of standard output");
-  c->callback([o] {
-    const bool zigzag = o->fold_angle_deg != 0;
-    if (o->facets < 3) throw InputError("<cli>", "--facets", fmt::format("{}; >= 3", o->facets));
-    if (o->rows < (zigzag ? 2 : 1)) {
-      throw InputError("<cli>", "--rows",
-                       fmt::format("{}; >= {}", o->rows, zigzag ? "2 with --fold-angle" : "1"));
+  c->callback([o, radius, fold, caps, flat, width, seal] {
+    CreasePattern p;
+    if (flat->count() > 0) {
+      for (const CLI::Option* other : {radius, fold, caps}) {
+        if (other->count() > 0) {
+          throw InputError("<cli>", other->get_name(),
+                           "not with --flat (--width, --facets per "
+                           "layer)");
+        }
+      }
+      p = flat_tube_from_options(o->facets, o->rows, o->length, o->gap, o->width, o->seal_length);
+    } else {
+      for (const CLI::Option* only_flat : {width, seal}) {
+        if (only_flat->count() > 0) {
+          throw InputError("<cli>", only_flat->get_name(), "only with --flat");
+        }
+      }
+      const bool zigzag = o->fold_angle_deg != 0;
+      if (o->facets < 3) throw InputError("<cli>", "--facets", fmt::format("{}; >= 3", o->facets));
+      if (o->rows < (zigzag ? 2 : 1)) {
+        throw InputError("<cli>", "--rows",
+                         fmt::format("{}; >= {}", o->rows, zigzag ? "2 with --fold-angle" : "1"));
+      }
+      require_positive(o->radius, "<cli>", "--radius", "m");
+      require_positive(o->length, "<cli>", "--length", "m");
+      if (!(std::abs(o->fold_angle_deg) <= 180)) {
+        throw InputError("<cli>", "--fold-angle",
+                         fmt::format("{}; deg in [-180, 180]", o->fold_angle_deg));
+      }
+      p = !zigzag && !o->caps
+              ? tube_crease_pattern(o->facets, o->rows, o->radius, o->length)
+              : zfolded_tube_crease_pattern(o->facets, o->rows, o->radius, o->length,
+                                            o->fold_angle_deg * kDegToRad);
     }
-    require_positive(o->radius, "<cli>", "--radius", "m");
-    require_positive(o->length, "<cli>", "--length", "m");
-    if (!(std::abs(o->fold_angle_deg) <= 180)) {
-      throw InputError("<cli>", "--fold-angle",
-                       fmt::format("{}; deg in [-180, 180]", o->fold_angle_deg));
-    }
-    const CreasePattern p =
-        !zigzag && !o->caps ? tube_crease_pattern(o->facets, o->rows, o->radius, o->length)
-                            : zfolded_tube_crease_pattern(o->facets, o->rows, o->radius, o->length,
-                                                          o->fold_angle_deg * kDegToRad);
     if (o->out.empty()) return fmt::print("{}", fold_text(p));
     write_fold(o->out, p);
     fmt::print(stderr, "wrote {}\n", o->out);
