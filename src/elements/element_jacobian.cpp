@@ -142,17 +142,26 @@ void add_rotational(const ElementDef& e, const CreaseDef* crease, const ElementH
 
 }  // namespace
 
-Mat3 rotational_spring_derivative(const Vec3& th, const Vec3& k) {
-  const double t2 = th.squaredNorm();
+Mat3 left_jacobian_inverse(const Vec3& th) {
   double c = 0, cp_over_t = 0;
-  left_jacobian_coefficients(t2, c, cp_over_t);
+  left_jacobian_coefficients(th.squaredNorm(), c, cp_over_t);
+  return left_jacobian_inv(th, c);
+}
+
+// Jl^-T w = w + th x w / 2 + c th x (th x w), differentiated at fixed w.
+Mat3 left_jacobian_inverse_transpose_derivative(const Vec3& th, const Vec3& w) {
+  double c = 0, cp_over_t = 0;
+  left_jacobian_coefficients(th.squaredNorm(), c, cp_over_t);
+  return -0.5 * hat(w) +
+         c * (th.dot(w) * Mat3::Identity() + th * w.transpose() - 2 * w * th.transpose()) +
+         cp_over_t * th.cross(th.cross(w)) * th.transpose();
+}
+
+// g = Jl^-T v, v = diag(k) theta: Jl^-T diag(k) plus the derivative at fixed v.
+Mat3 rotational_spring_derivative(const Vec3& th, const Vec3& k) {
   const Vec3 v = k.cwiseProduct(th);
-  const Mat3 Kd = k.asDiagonal();
-  const Vec3 th_th_v = th.cross(th.cross(v));
-  return Kd + 0.5 * (-hat(v) + hat(th) * Kd) +
-         c * (th.dot(v) * Mat3::Identity() + 2 * th * v.transpose() - t2 * Kd -
-              2 * v * th.transpose()) +
-         cp_over_t * th_th_v * th.transpose();
+  return left_jacobian_inverse(th).transpose() * k.asDiagonal() +
+         left_jacobian_inverse_transpose_derivative(th, v);
 }
 
 void element_jacobian(const ElementDef& e, const CreaseDef* crease, const ElementHistory& hist,

@@ -23,4 +23,11 @@ void element_jacobian(const ElementDef& e, const CreaseDef* crease, const Elemen
 /// d g / d theta of g = Jl^-T(theta) diag(k) theta, the couple of the rotational springs.
 Mat3 rotational_spring_derivative(const Vec3& theta, const Vec3& k);
 
+/// Jl^-1(theta), the inverse left Jacobian of SO(3): d log(R) = Jl^-1 (dphi, left increment).
+Mat3 left_jacobian_inverse(const Vec3& theta);
+
+/// d (Jl^-T(theta) w) / d theta at fixed w: how the couple of a rotation-vector energy turns
+/// with the rotation it is measured on.
+Mat3 left_jacobian_inverse_transpose_derivative(const Vec3& theta, const Vec3& w);
+
 }  // namespace finseg

@@ -5,6 +5,7 @@
 
 #include "core/so3.hpp"
 #include "elements/assembler.hpp"
+#include "elements/cell_bodies.hpp"
 
 namespace finseg {
 namespace {
@@ -25,23 +26,6 @@ struct SideNow {
   int inner = -1, outer = -1;
   Attachment a_in, a_out;
   Vec3 u_W, f_W;
-};
-
-// The bodies a cell's forces reach (the cell first), as local indices into its Jacobian.
-class CellBodies {
- public:
-  int local(int body) {
-    const auto it = std::find(bodies_.begin(), bodies_.end(), body);
-    if (it != bodies_.end()) return static_cast<int>(it - bodies_.begin());
-    bodies_.push_back(body);
-    return static_cast<int>(bodies_.size()) - 1;
-  }
-  int size() const { return static_cast<int>(bodies_.size()); }
-  int body(int i) const { return bodies_[i]; }
-  void clear() { bodies_.clear(); }
-
- private:
-  std::vector<int> bodies_;
 };
 
 // d x / d pose of a point with lever r: [I, -[r]x] (world-frame rotation increments).
