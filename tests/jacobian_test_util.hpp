@@ -37,4 +37,20 @@ inline Eigen::VectorXd fd_velocity_column(const Model& m, const State& st, const
   return (generalized_forces(m, fa) - generalized_forces(m, fb)) / (2 * h);
 }
 
+/// The Jacobian of the generalized forces by pose (dense), as the solvers assemble it.
+inline Eigen::MatrixXd pose_jacobian(const Model& m, const State& st) {
+  BodyForces f;
+  ForceJacobian jac;
+  jac.with_velocity = false;
+  compute_forces(m, st, f, &jac);
+  return Eigen::MatrixXd(jac.dq);
+}
+
+/// The same by central differences of step h (m or rad), column by column.
+inline Eigen::MatrixXd fd_pose_jacobian(const Model& m, const State& st, double h) {
+  Eigen::MatrixXd J(m.num_dofs, m.num_dofs);
+  for (int c = 0; c < m.num_dofs; ++c) J.col(c) = fd_pose_column(m, st, c, h);
+  return J;
+}
+
 }  // namespace finseg::test

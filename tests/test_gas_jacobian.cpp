@@ -46,17 +46,11 @@ State deformed(const Model& m) {
 }
 
 Eigen::MatrixXd jacobian(const Model& m, const State& s) {
-  BodyForces f;
-  ForceJacobian jac;
-  jac.with_velocity = false;
-  compute_forces(m, s, f, &jac);
-  return Eigen::MatrixXd(jac.dq);
+  return test::pose_jacobian(m, s);
 }
 
 Eigen::MatrixXd differences(const Model& m, const State& s) {
-  Eigen::MatrixXd J(m.num_dofs, m.num_dofs);
-  for (int c = 0; c < m.num_dofs; ++c) J.col(c) = test::fd_pose_column(m, s, c, 1e-6);
-  return J;
+  return test::fd_pose_jacobian(m, s, 1e-6);
 }
 
 TEST(ChamberJacobian, PressureForcesAtFixedPressureMatchCentralDifferences) {

@@ -47,26 +47,13 @@ State bent(const Model& m) {
   return s;
 }
 
-Eigen::MatrixXd jacobian(const Model& m, const State& s) {
-  BodyForces f;
-  ForceJacobian jac;
-  jac.with_velocity = false;
-  compute_forces(m, s, f, &jac);
-  return Eigen::MatrixXd(jac.dq);
-}
-
-Eigen::MatrixXd differences(const Model& m, const State& s) {
-  Eigen::MatrixXd J(m.num_dofs, m.num_dofs);
-  for (int c = 0; c < m.num_dofs; ++c) J.col(c) = test::fd_pose_column(m, s, c, 1e-7);
-  return J;
-}
-
 TEST(PlateCells, JacobianMatchesCentralDifferencesWhenBent) {
   const Model m = miura_sheet(true), bare = miura_sheet(false);
   ASSERT_FALSE(m.plate_cells.empty());
   const State s = bent(m);
-  const Eigen::MatrixXd J = jacobian(m, s) - jacobian(bare, s);
-  const Eigen::MatrixXd fd = differences(m, s) - differences(bare, s);
+  const Eigen::MatrixXd J = test::pose_jacobian(m, s) - test::pose_jacobian(bare, s);
+  const Eigen::MatrixXd fd =
+      test::fd_pose_jacobian(m, s, 1e-7) - test::fd_pose_jacobian(bare, s, 1e-7);
   const double scale = J.cwiseAbs().maxCoeff();
   ASSERT_GT(scale, 0);
   EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << "largest entry " << scale;

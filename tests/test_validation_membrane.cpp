@@ -157,13 +157,7 @@ TEST(MembraneCells, JacobianMatchesCentralDifferencesWhenStrained) {
   Eigen::VectorXd dq(m.num_dofs);
   for (int i = 0; i < m.num_dofs; ++i) dq[i] = (i % 6 < 3 ? 2e-4 : 0.02) * std::sin(1.7 * i + 0.3);
   apply_pose_increment(m, s, dq);
-  BodyForces f;
-  ForceJacobian jac;
-  jac.with_velocity = false;
-  compute_forces(m, s, f, &jac);
-  const Eigen::MatrixXd J(jac.dq);
-  Eigen::MatrixXd fd(m.num_dofs, m.num_dofs);
-  for (int c = 0; c < m.num_dofs; ++c) fd.col(c) = test::fd_pose_column(m, s, c, 1e-7);
+  const Eigen::MatrixXd J = test::pose_jacobian(m, s), fd = test::fd_pose_jacobian(m, s, 1e-7);
   const double scale = J.cwiseAbs().maxCoeff();
   EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << "largest entry " << scale;
 }
