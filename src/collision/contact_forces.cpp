@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "collision/broadphase.hpp"
+#include "collision/contact_jacobian.hpp"
 #include "collision/contact_laws.hpp"
+#include "collision/contact_pair.hpp"
 #include "collision/narrowphase.hpp"
 #include "collision/pair_rules.hpp"
 #include "elements/assembler.hpp"
@@ -59,23 +61,6 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
   if (parallel) return n_tgt.dot(state.p_W[src] - state.p_W[tgt]) >= 0 ? 1 : -1;
   return now.z() >= 0 ? 1 : -1;
 }
-
-/// One sample point of a pair in contact.
-struct ActivePoint {
-  int dir = 0;     ///< 0: a sampled on b, 1: b sampled on a
-  int sample = 0;  ///< index into the source plate's samples
-  Vec3 r_B;        ///< sample in the source body frame, m
-  double share = 0;
-  int side = 1;
-  const ContactAnchor* anchor = nullptr;
-};
-
-/// One touching pair after the narrow phase.
-struct PairContact {
-  int a = -1, b = -1;
-  PlateShape sa, sb;
-  std::vector<ActivePoint> points;
-};
 
 /// Calls visit(const PairContact&) for every touching pair, in pair order.
 template <class Visit>
@@ -200,10 +185,28 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   if (!model.contact.enabled) return;
   validate_contact(model.contact, model.source);  // models built through the API
   const ContactDef& def = model.contact;
-  detect(model, state, [&](const PairContact& pc) {
-    assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
-      return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
+  if (assembler.want_jacobian() && assembler.autodiff_elements()) {
+    // The automatic-differentiation oracle of the closed form.
+    detect(model, state, [&](const PairContact& pc) {
+      assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
+        return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
+      });
     });
+    return;
+  }
+  const bool with_velocity = assembler.want_velocity_jacobian();
+  detect(model, state, [&](const PairContact& pc) {
+    const BodyKin<double> A = assembler.kin(pc.a), B = assembler.kin(pc.b);
+    Wrench<double> wa, wb;
+    assembler.add_energy(evaluate_pair(def, pc, A, B, wa, wb, nullptr));
+    assembler.add(pc.a, wa);
+    assembler.add(pc.b, wb);
+    if (!assembler.want_jacobian()) return;
+    const PairSlots slots = assembler.reserve_pair(pc.a, pc.b, with_velocity);
+    if (!slots.any()) return;
+    Mat12 dq = Mat12::Zero(), dv = Mat12::Zero();
+    add_contact_pair_jacobian(def, pc, A, B, slots.with_velocity, dq, dv);
+    assembler.fill_pair(slots, dq, dv);
   });
 }
 
