@@ -1,6 +1,7 @@
 // Closed-form Jacobian of the contact wrenches; the derivation in docs/contact.md,
 // "Jacobian". Every branch (closest polygon feature, side, force clamp, friction regime,
-// cap) is taken as the kernel takes it, on the same values.
+// cap) is the one the kernel's double evaluation took (its PointReport), so that the
+// Jacobian is that of the forces the solver sees, also on a boundary between branches.
 #include "collision/contact_jacobian.hpp"
 
 #include <cmath>
@@ -26,31 +27,34 @@ struct ScalarJac {
   Row12 v = Row12::Zero();
 };
 
-/// The kernel's cap: f unchanged while |f| <= limit, else f scaled to |f| = limit.
-Vec3 capped(const Vec3& f, const VecJac& Jf, double limit, const ScalarJac& Jlimit, VecJac& out) {
+/// Derivative of the kernel's cap of f at |f| = limit (f scaled to the limit) where the
+/// kernel capped it, else of f itself.
+void capped(bool was_capped, const Vec3& f, const VecJac& Jf, double limit, const ScalarJac& Jlimit,
+            VecJac& out) {
   const double f2 = f.squaredNorm();
-  if (f2 <= limit * limit) {
+  if (!was_capped) {
     out = Jf;
-    return f;
+    return;
   }
   if (!(f2 > 0)) {
     out = VecJac{};
-    return Vec3::Zero();
+    return;
   }
   const double norm = std::sqrt(f2);
   const Vec3 u = f / norm;
   const Mat3 project = (limit / norm) * (Mat3::Identity() - u * u.transpose());
   out.q = project * Jf.q + u * Jlimit.q;
   out.v = project * Jf.v + u * Jlimit.v;
-  return f * (limit / norm);
 }
 
-/// Anchor friction of a point with an anchor (contact_forces.cpp's friction_force): spring
-/// -k_t z_t to the anchor and damper -c_t v_t, capped at mu F_n (apart while sticking).
-Vec3 anchor_friction(const ContactDef& def, const ActivePoint& pt, const BodyKin<double>& src,
-                     const BodyKin<double>& tgt, int Sp, int Gp, const Vec3& n, const Mat3x12& Jn,
-                     double fn, const ScalarJac& Jfn, const Vec3& v_t, const VecJac& Jvt,
-                     VecJac& Jft) {
+/// Derivative of the anchor friction of a point with an anchor (contact_forces.cpp's
+/// friction_force): spring -k_t z_t to the anchor and damper -c_t v_t, capped at mu F_n
+/// (apart while sticking) where the kernel capped them.
+void anchor_friction(const ContactDef& def, const ActivePoint& pt, const PointReport& r,
+                     const BodyKin<double>& src, const BodyKin<double>& tgt, int Sp, int Gp,
+                     const Mat3x12& Jn, const ScalarJac& Jfn, const VecJac& Jvt, VecJac& Jft) {
+  const Vec3& n = r.n_W;
+  const double fn = r.normal;
   const ContactAnchor& an = *pt.anchor;
   const Vec3 arm_s = src.R_WB * an.r_src_B, arm_g = tgt.R_WB * an.r_tgt_B;
   const Vec3 z = (src.p_W + arm_s) - (tgt.p_W + arm_g);
@@ -68,7 +72,7 @@ Vec3 anchor_friction(const ContactDef& def, const ActivePoint& pt, const BodyKin
   Jlimit.q = mu * Jfn.q;
   Jlimit.v = mu * Jfn.v;
   const double kt = pt.share * def.tangential_stiffness, ct = pt.share * def.tangential_damping;
-  const Vec3 spring = -kt * z_t, damper = -ct * v_t;
+  const Vec3 spring = -kt * z_t, damper = -ct * r.v_t;
   VecJac Js, Jd;
   Js.q = -kt * (tangential * Jz - (n * z.transpose() + nz * Mat3::Identity()) * Jn);
   Jd.q = -ct * Jvt.q;
@@ -77,22 +81,25 @@ Vec3 anchor_friction(const ContactDef& def, const ActivePoint& pt, const BodyKin
     VecJac Jsum;
     Jsum.q = Js.q + Jd.q;
     Jsum.v = Jd.v;
-    return capped(spring + damper, Jsum, limit, Jlimit, Jft);
+    capped(r.spring_capped, spring + damper, Jsum, limit, Jlimit, Jft);
+    return;
   }
   VecJac Jcs, Jcd;
-  const Vec3 f = capped(spring, Js, limit, Jlimit, Jcs) + capped(damper, Jd, limit, Jlimit, Jcd);
+  capped(r.spring_capped, spring, Js, limit, Jlimit, Jcs);
+  capped(r.damper_capped, damper, Jd, limit, Jlimit, Jcd);
   Jft.q = Jcs.q + Jcd.q;
   Jft.v = Jcs.v + Jcd.v;
-  return f;
 }
 
 }  // namespace
 
 void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
-                               const BodyKin<double>& A, const BodyKin<double>& B,
-                               bool with_velocity, Mat12& dq, Mat12& dv) {
+                               const std::vector<PointReport>& reports, const BodyKin<double>& A,
+                               const BodyKin<double>& B, bool with_velocity, Mat12& dq, Mat12& dv) {
   const Mat3 I = Mat3::Identity();
-  for (const ActivePoint& pt : pc.points) {
+  for (std::size_t k = 0; k < pc.points.size(); ++k) {
+    const ActivePoint& pt = pc.points[k];
+    const PointReport& r = reports[k];
     // Column (and row) offsets of the source and target bodies.
     const int Sp = pt.dir == 0 ? 0 : 6, Gp = 6 - Sp;
     const BodyKin<double>& src = pt.dir == 0 ? A : B;
@@ -101,40 +108,30 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     const PlateShape& st = pt.dir == 0 ? pc.sb : pc.sa;
     const Vec3 arm = src.R_WB * pt.r_B;
     const Vec3 p = src.p_W + arm;
-    const PointContact<double> c = point_on_plate(tgt, st, p, ss.r, pt.side);
-    const Vec3& n = c.n_W;
 
     // The sample point p and its coordinates l = R_G^T (p - p_G) in the target's frame:
-    // dl = R_G^T (dd + [d] dphi_G).
-    Mat3x12 Jp = Mat3x12::Zero();
-    Jp.block<3, 3>(0, Sp) = I;
-    Jp.block<3, 3>(0, Sp + 3) = -hat(arm);
+    // dl = R_G^T (dp - dp_G + [p - p_G] dphi_G), dp = dp_S - [arm] dphi_S.
     const Vec3 d = p - tgt.p_W;
     const Mat3 Rt = tgt.R_WB.transpose();
-    Mat3x12 Jl = Rt * Jp;
-    Jl.block<3, 3>(0, Gp) -= Rt;
-    Jl.block<3, 3>(0, Gp + 3) += Rt * hat(d);
-    const Vec3 l = Rt * d;
-    double du, dv_;
-    polygon_offset(*st.outline, l.x(), l.y(), du, dv_);
+    Mat3x12 Jl;
+    Jl.block<3, 3>(0, Sp) = Rt;
+    Jl.block<3, 3>(0, Sp + 3) = -Rt * hat(arm);
+    Jl.block<3, 3>(0, Gp) = -Rt;
+    Jl.block<3, 3>(0, Gp + 3) = Rt * hat(d);
 
-    // Distance and normal: over the face dist = side h and n = side e_z; outside it
-    // q = R_G (du, dv, h), dist = |q|, n = q / dist, dn = (I - n n^T) dq / dist.
-    double dist;
+    // Distance and normal (point_on_plate): over the face dist = side h and n = side e_z;
+    // outside it q = R_G (du, dv, h), dist = |q|, n = q / dist, dn = (I - n n^T) dq / dist.
+    const double dist = r.dist;
+    const Vec3& n = r.n_W;
     Row12 Jdist;
     Mat3x12 Jn;
-    if (du == 0 && dv_ == 0) {
-      const double side = pt.side;
-      dist = side * l.z();
-      Jdist = side * Jl.row(2);
+    if (r.du == 0 && r.dv == 0) {
+      Jdist = pt.side * Jl.row(2);
       Jn.setZero();
-      Jn.block<3, 3>(0, Gp + 3) = -side * hat(Vec3(tgt.R_WB.col(2)));
+      Jn.block<3, 3>(0, Gp + 3) = -hat(n);
     } else {
-      const Vec3 m(du, dv_, l.z());
-      const Vec3 q = tgt.R_WB * m;
-      dist = m.norm();
-      const Eigen::Matrix2d P =
-          polygon_offset_slope(*st.outline, closest_feature(*st.outline, l.x(), l.y()));
+      const Vec3 q = tgt.R_WB * Vec3(r.du, r.dv, r.height);
+      const Eigen::Matrix2d P = polygon_offset_slope(*st.outline, r.feature);
       Mat3x12 Jm;
       Jm.topRows<2>() = P * Jl.topRows<2>();
       Jm.row(2) = Jl.row(2);
@@ -145,9 +142,11 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     }
 
     // Contact point x = p - n (dist + r_s - r_t) / 2 and the relative velocity there.
-    const double half = (dist + ss.r - st.r) / 2;
-    const Mat3x12 Jx = Jp - half * Jn - 0.5 * n * Jdist;
-    const Vec3& x = c.x_W;
+    const double half = (dist + (ss.r - st.r)) / 2;
+    Mat3x12 Jx = -half * Jn - 0.5 * n * Jdist;
+    Jx.block<3, 3>(0, Sp) += I;
+    Jx.block<3, 3>(0, Sp + 3) -= hat(arm);
+    const Vec3& x = r.x_W;
     const Vec3 rs = x - src.p_W, rg = x - tgt.p_W;
     const Vec3 v_rel = (src.v_W + src.w_W.cross(rs)) - (tgt.v_W + tgt.w_W.cross(rg));
     VecJac Jvr;
@@ -160,37 +159,34 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     Jvr.v.block<3, 3>(0, Gp + 3) = hat(rg);
 
     // Normal force F_n = share F(delta, rate), delta = r_s + r_t - dist, rate = -n . v_rel.
-    const double rate = -n.dot(v_rel);
+    const double rate = r.penetration_rate;
     ScalarJac Jrate;
     Jrate.q = -(v_rel.transpose() * Jn + n.transpose() * Jvr.q);
     Jrate.v = -n.transpose() * Jvr.v;
-    const double v0 = pt.anchor ? pt.anchor->impact_speed : rate;
-    const NormalForceSlopes law = normal_force_slopes(def, c.depth, rate, v0);
-    const double fn = pt.share * law.f;
+    const double fn = r.normal;
     ScalarJac Jfn;
-    Jfn.q = pt.share * (-law.d_delta * Jdist + law.d_rate * Jrate.q);
-    Jfn.v = pt.share * law.d_rate * Jrate.v;
+    if (fn > 0) {  // else the kernel clamped the force to zero
+      const double v0 = pt.anchor ? pt.anchor->impact_speed : rate;
+      const NormalForceSlopes law = normal_force_slopes(def, r.depth, rate, v0);
+      Jfn.q = pt.share * (-law.d_delta * Jdist + law.d_rate * Jrate.q);
+      Jfn.v = pt.share * law.d_rate * Jrate.v;
+    }
 
     // Friction from the tangential velocity v_t = v_rel + n rate.
-    const Vec3 v_t = v_rel + n * rate;
     VecJac Jvt;
     Jvt.q = Jvr.q + rate * Jn + n * Jrate.q;
     Jvt.v = Jvr.v + n * Jrate.v;
-    Vec3 f_t = Vec3::Zero();
     VecJac Jft;
     if (def.friction == FrictionModel::Continuous ||
         (def.friction == FrictionModel::Anchor && pt.anchor == nullptr)) {
-      const FrictionSlopes fr = continuous_friction_slopes(def, fn, v_t);
-      f_t = fr.f;
+      const FrictionSlopes fr = continuous_friction_slopes(def, fn, r.v_t);
       Jft.q = fr.d_fn * Jfn.q + fr.d_vt * Jvt.q;
       Jft.v = fr.d_fn * Jfn.v + fr.d_vt * Jvt.v;
     } else if (def.friction == FrictionModel::Anchor) {
-      f_t = anchor_friction(def, pt, src, tgt, Sp, Gp, n, Jn, fn, Jfn, v_t, Jvt, Jft);
+      anchor_friction(def, pt, r, src, tgt, Sp, Gp, Jn, Jfn, Jvt, Jft);
     }
 
-    // f = F_n n + f_t on the source at x, -f on the target; moments about the centroids:
-    // d((x - p) x f) = -[f] (dx - dp) + [x - p] df.
-    const Vec3 f = fn * n + f_t;
+    const Vec3 f = fn * n + r.f_t;
     VecJac Jf;
     Jf.q = n * Jfn.q + fn * Jn + Jft.q;
     Jf.v = n * Jfn.v + Jft.v;

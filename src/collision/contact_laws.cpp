@@ -43,8 +43,7 @@ double step3_slope(double x, double x0, double h0, double x1, double h1) {
 NormalForceSlopes normal_force_slopes(const ContactDef& c, double delta, double delta_dot,
                                       double v0) {
   NormalForceSlopes r;
-  r.f = normal_force(c, delta, delta_dot, v0);
-  if (!(r.f > 0)) return r;  // no contact, or the damping pulled the total to zero
+  if (!(delta > 0)) return r;
   const double elastic = c.stiffness * std::pow(delta, c.exponent);
   const double elastic_slope = c.stiffness * c.exponent * std::pow(delta, c.exponent - 1);
   if (c.damping_law == ContactDamping::Impact) {

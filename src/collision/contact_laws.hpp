@@ -96,10 +96,10 @@ Vec3T<T> continuous_friction(const ContactDef& c, const T& fn, const Vec3T<T>& v
 /// d step3 / dx at x.
 double step3_slope(double x, double x0, double h0, double x1, double h1);
 
-/// normal_force and its partial derivatives by delta and delta_dot (all zero where the law
-/// gives no force).
+/// Partial derivatives of normal_force by delta > 0 and delta_dot where the force is
+/// positive (where normal_force clamps it to zero they are zero: the caller knows).
 struct NormalForceSlopes {
-  double f = 0, d_delta = 0, d_rate = 0;
+  double d_delta = 0, d_rate = 0;
 };
 NormalForceSlopes normal_force_slopes(const ContactDef& c, double delta, double delta_dot,
                                       double v0);

@@ -26,4 +26,16 @@ struct PairContact {
   std::vector<ActivePoint> points;
 };
 
+/// What the kernel found at one active point (its double evaluation): values for the probes
+/// and the history, and the branches it took, which the closed-form Jacobian follows.
+struct PointReport {
+  Vec3 x_W, n_W, v_t;
+  double depth = 0, normal = 0, friction = 0, share = 0, penetration_rate = 0;
+  Vec3 f_t = Vec3::Zero();
+  double dist = 0, height = 0, du = 0, dv = 0;  ///< point_on_plate's geometry
+  PolygonFeature feature;                       ///< point_on_plate's closest feature
+  bool spring_capped = false;  ///< anchor friction: the spring (sliding: spring + damper) capped
+  bool damper_capped = false;  ///< anchor friction, sticking: the damper capped
+};
+
 }  // namespace finseg

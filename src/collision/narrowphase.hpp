@@ -73,12 +73,11 @@ inline Vec2 edge_normal(const Outline& poly, int i) {
   return {e.y() / len, -e.x() / len};
 }
 
-/// Offset (du, dv) of the in-plane point (u, v) from the closest point of the convex
-/// polygon, zero inside. Beside an edge it is the offset along the edge's outward normal
-/// (exact for edges along the axes); beyond a corner, the offset from the vertex.
+/// Offset (du, dv) of the in-plane point (u, v) from feature f of the polygon (zero for
+/// none): along the edge's outward normal, or from the vertex.
 template <class T>
-void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
-  const PolygonFeature f = closest_feature(poly, value_of(u), value_of(v));
+void feature_offset(const Outline& poly, const PolygonFeature& f, const T& u, const T& v, T& du,
+                    T& dv) {
   if (f.edge >= 0) {
     const Vec2& a = poly[f.edge];
     const Vec2 nrm = edge_normal(poly, f.edge);
@@ -91,6 +90,14 @@ void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
   } else {
     du = dv = T(0);
   }
+}
+
+/// Offset (du, dv) of the in-plane point (u, v) from the closest point of the convex
+/// polygon, zero inside. Beside an edge it is the offset along the edge's outward normal
+/// (exact for edges along the axes); beyond a corner, the offset from the vertex.
+template <class T>
+void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
+  feature_offset(poly, closest_feature(poly, value_of(u), value_of(v)), u, v, du, dv);
 }
 
 /// d(du, dv) / d(u, v) of polygon_offset at feature f: n n^T beside edge n, the identity
@@ -132,6 +139,9 @@ struct PointContact {
   Vec3T<T> x_W;  ///< contact point: middle of the overlap of the two rounded surfaces, m
   T depth;       ///< r_src + r_tgt - distance, m (> 0: in contact)
   T height;      ///< signed distance of p_W from the target mid-plane, m
+  T dist;        ///< distance from the target polygon (side * height over its face), m
+  T du, dv;      ///< in-plane offset from the target polygon (target frame; 0 over the face)
+  PolygonFeature feature;  ///< the polygon's closest feature (none: over the face)
 };
 
 /// Contact of the source point p_W (on a plate of half thickness r_src) with the target
@@ -145,10 +155,13 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
   const Vec3T<T> ex = tgt.R_WB.col(0), ey = tgt.R_WB.col(1), ez = tgt.R_WB.col(2);
   const Vec3T<T> d = p_W - tgt.p_W;
   const T u = ex.dot(d), v = ey.dot(d), h = ez.dot(d);
-  T du, dv;
-  polygon_offset(*st.outline, u, v, du, dv);
   PointContact<T> c;
+  c.feature = closest_feature(*st.outline, value_of(u), value_of(v));
+  T du, dv;
+  feature_offset(*st.outline, c.feature, u, v, du, dv);
   c.height = h;
+  c.du = du;
+  c.dv = dv;
   T dist;
   if (value_of(du) == 0 && value_of(dv) == 0) {
     dist = T(static_cast<double>(side)) * h;
@@ -157,6 +170,7 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
     dist = sqrt(du * du + dv * dv + h * h);
     c.n_W = (du * ex + dv * ey + h * ez) / dist;
   }
+  c.dist = dist;
   c.depth = T(r_src + st.r) - dist;
   c.x_W = p_W - c.n_W * ((dist + T(r_src - st.r)) / T(2));
   return c;
