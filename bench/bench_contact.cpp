@@ -85,12 +85,14 @@ Scene sliding_scene(int n) {
   return sc;
 }
 
-// jacobian: 0 forces only, 1 closed form, 2 automatic differentiation.
+// jacobian: 0 forces only, 1 closed form, 2 automatic differentiation; range(1): 1 with the
+// velocity columns (implicit solver), 0 poses only (static solver).
 void contact_forces_bench(benchmark::State& st, int jacobian) {
   const Scene sc = sliding_scene(static_cast<int>(st.range(0)));
   BodyForces f;
   ForceJacobian jac;
   jac.autodiff = jacobian == 2;
+  jac.with_velocity = st.range(1) != 0;
   for (auto _ : st) {
     f.f_W.assign(sc.model.bodies.size(), Vec3::Zero());
     f.tau_W.assign(sc.model.bodies.size(), Vec3::Zero());
@@ -109,9 +111,13 @@ void BM_ContactForcesJacobianClosedForm(benchmark::State& st) {
 void BM_ContactForcesJacobianAutodiff(benchmark::State& st) {
   contact_forces_bench(st, 2);
 }
-BENCHMARK(BM_ContactForces)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ContactForcesJacobianClosedForm)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ContactForcesJacobianAutodiff)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForces)->Args({1000, 1})->Args({10000, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForcesJacobianClosedForm)
+    ->ArgsProduct({{1000, 10000}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForcesJacobianAutodiff)
+    ->ArgsProduct({{1000, 10000}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace finseg

@@ -153,35 +153,37 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     Jvr.q = hat(Vec3(src.w_W - tgt.w_W)) * Jx;
     Jvr.q.block<3, 3>(0, Sp) -= hat(src.w_W);
     Jvr.q.block<3, 3>(0, Gp) += hat(tgt.w_W);
-    Jvr.v.block<3, 3>(0, Sp) = I;
-    Jvr.v.block<3, 3>(0, Sp + 3) = -hat(rs);
-    Jvr.v.block<3, 3>(0, Gp) = -I;
-    Jvr.v.block<3, 3>(0, Gp + 3) = hat(rg);
+    if (with_velocity) {  // else every .v below stays zero
+      Jvr.v.block<3, 3>(0, Sp) = I;
+      Jvr.v.block<3, 3>(0, Sp + 3) = -hat(rs);
+      Jvr.v.block<3, 3>(0, Gp) = -I;
+      Jvr.v.block<3, 3>(0, Gp + 3) = hat(rg);
+    }
 
     // Normal force F_n = share F(delta, rate), delta = r_s + r_t - dist, rate = -n . v_rel.
     const double rate = r.penetration_rate;
     ScalarJac Jrate;
     Jrate.q = -(v_rel.transpose() * Jn + n.transpose() * Jvr.q);
-    Jrate.v = -n.transpose() * Jvr.v;
+    if (with_velocity) Jrate.v = -n.transpose() * Jvr.v;
     const double fn = r.normal;
     ScalarJac Jfn;
     if (fn > 0) {  // else the kernel clamped the force to zero
       const double v0 = pt.anchor ? pt.anchor->impact_speed : rate;
       const NormalForceSlopes law = normal_force_slopes(def, r.depth, rate, v0);
       Jfn.q = pt.share * (-law.d_delta * Jdist + law.d_rate * Jrate.q);
-      Jfn.v = pt.share * law.d_rate * Jrate.v;
+      if (with_velocity) Jfn.v = pt.share * law.d_rate * Jrate.v;
     }
 
     // Friction from the tangential velocity v_t = v_rel + n rate.
     VecJac Jvt;
     Jvt.q = Jvr.q + rate * Jn + n * Jrate.q;
-    Jvt.v = Jvr.v + n * Jrate.v;
+    if (with_velocity) Jvt.v = Jvr.v + n * Jrate.v;
     VecJac Jft;
     if (def.friction == FrictionModel::Continuous ||
         (def.friction == FrictionModel::Anchor && pt.anchor == nullptr)) {
       const FrictionSlopes fr = continuous_friction_slopes(def, fn, r.v_t);
       Jft.q = fr.d_fn * Jfn.q + fr.d_vt * Jvt.q;
-      Jft.v = fr.d_fn * Jfn.v + fr.d_vt * Jvt.v;
+      if (with_velocity) Jft.v = fr.d_fn * Jfn.v + fr.d_vt * Jvt.v;
     } else if (def.friction == FrictionModel::Anchor) {
       anchor_friction(def, pt, r, src, tgt, Sp, Gp, Jn, Jfn, Jvt, Jft);
     }
@@ -189,7 +191,7 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     const Vec3 f = fn * n + r.f_t;
     VecJac Jf;
     Jf.q = n * Jfn.q + fn * Jn + Jft.q;
-    Jf.v = n * Jfn.v + Jft.v;
+    if (with_velocity) Jf.v = n * Jfn.v + Jft.v;
     const Mat3 hf = hat(f), hrs = hat(rs), hrg = hat(rg);
     Mat3x12 Jarm_s = Jx, Jarm_g = Jx;
     Jarm_s.block<3, 3>(0, Sp) -= I;
