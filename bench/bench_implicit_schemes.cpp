@@ -1,17 +1,17 @@
 // Issue 12 benchmark (a), BENCHMARKS.md "Implicit schemes": the 200 x 40 x 0.1 mm paper strip
 // (E = 4 GPa, 800 kg/m^3, q L^3 / EI = 18.8), clamped at one end, falling from flat under its
 // own weight with no damping. For each scheme, the loosest rtol (from --start-ga / --start-be,
-// default 1e-3, down by ~3x) whose
-// tip stays within 1e-3 L of a converged reference at t = 0.25, 0.5 and 1 s; every rtol tried
-// is printed (steps, Newton iterations, wall and CPU seconds per simulated second). The
-// reference is generalized-alpha at --ref (default 1e-8), checked against --check (default
-// 1e-7): their difference is printed, so that a cheaper reference shows it is converged.
-// Usage: bench_implicit_schemes [--ref R] [--check R] [--start-ga R] [--start-be R] [--schemes
-// ga|be|both]
-//        [segments...]   (default 40 160 640)
-//        bench_implicit_schemes --single ga|be RTOL segments...: one run per segment count, its
-//        counts, times and the three tip positions (m, full precision), for sweeps split over
-//        processes; compare their tips with a reference run's by hand.
+// default 1e-3, down by ~3x to 1e-7) whose tip stays within 1e-3 L of a converged reference
+// at t = 0.25, 0.5 and 1 s; every rtol tried is printed (steps, Newton iterations, wall and
+// CPU seconds per simulated second). The reference is generalized-alpha at --ref (default
+// 1e-8), checked against --check (default 1e-7): their difference is printed, so that a
+// cheaper reference shows it is converged.
+// Usage:
+//   bench_implicit_schemes [--ref R] [--check R] [--start-ga R] [--start-be R]
+//                          [--schemes ga|be|both] [segments...]   (default 40 160 640)
+//   bench_implicit_schemes --single ga|be RTOL segments...: one run per segment count, its
+//     counts, times and the three tip positions (m, full precision), for sweeps split over
+//     processes; compare their tips with a reference run's by hand.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
