@@ -8,7 +8,9 @@
 // cheaper reference shows it is converged.
 // Usage:
 //   bench_implicit_schemes [--ref R] [--check R] [--start-ga R] [--start-be R]
-//                          [--schemes ga|be|both] [segments...]   (default 40 160 640)
+//                          [--schemes ga|be|both] [--atol A] [segments...]   (default 40 160
+//                          640; --atol: absolute tolerance, m and rad, of every run, default
+//                          the solver's 1e-7, which bounds the local error below rtol ~1e-6)
 //   bench_implicit_schemes --single ga|be RTOL segments...: one run per segment count, its
 //     counts, times and the three tip positions (m, full precision), for sweeps split over
 //     processes; compare their tips with a reference run's by hand.
@@ -35,6 +37,8 @@ struct Run {
   double wall = 0, cpu = 0;  // s; cpu: this process's CPU time (robust on a shared machine)
 };
 
+double g_atol = 0;  // --atol: absolute tolerance of every run (0: the solver's default)
+
 Run run(int segments, ImplicitScheme scheme, double rtol) {
   CantileverSpec s;
   s.length = kL;
@@ -55,6 +59,7 @@ Run run(int segments, ImplicitScheme scheme, double rtol) {
   set.t_end = 1.0;
   set.output_interval = 0.25;
   set.rtol = rtol;
+  if (g_atol > 0) set.atol = g_atol;
   Run r;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
@@ -106,13 +111,15 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
-    if ((a == "--ref" || a == "--check" || a == "--start-ga" || a == "--start-be" ||
-         a == "--schemes") &&
+    if ((a == "--ref" || a == "--check" || a == "--atol" || a == "--start-ga" ||
+         a == "--start-be" || a == "--schemes") &&
         !has_value) {
       std::fprintf(stderr, "bench_implicit_schemes: %s needs a value\n", a.c_str());
       return 2;
     }
-    if (a == "--single") {
+    if (a == "--atol") {
+      g_atol = parse_rtol("--atol", argv[++i]);
+    } else if (a == "--single") {
       if (i + 2 >= argc) {
         std::fprintf(stderr, "bench_implicit_schemes: --single needs a scheme and an rtol\n");
         return 2;
