@@ -1,13 +1,17 @@
 // Contact detection cost against the number of segments: stacks of sheets (10 layers of a
 // square grid of 5 mm segments, each sheet resting on the one below with small random
 // offsets and tilts), so that the number of touching pairs grows like n. Reports the
-// fitted complexity (expected: n log n from the broad phase's sort, or better).
+// fitted complexity (expected: n log n from the broad phase's sort, or better). Also the
+// contact forces alone and with their Jacobian (poses and velocities), closed form against
+// the automatic differentiation it replaced, on the same stacks sliding with continuous
+// friction.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
 
 #include "collision/contact_forces.hpp"
+#include "elements/assembler.hpp"
 
 namespace finseg {
 namespace {
@@ -66,6 +70,54 @@ BENCHMARK(BM_ContactDetection)
     ->Arg(30000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity(benchmark::oNLogN);
+
+// The stacks with continuous friction, every free plate moving a little (m/s, rad/s).
+Scene sliding_scene(int n) {
+  Scene sc = make_scene(n);
+  sc.model.contact.friction = FrictionModel::Continuous;
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> v(-1e-3, 1e-3), w(-0.1, 0.1);
+  for (std::size_t i = 0; i < sc.model.bodies.size(); ++i) {
+    if (sc.model.bodies[i].fixed) continue;
+    sc.state.v_W[i] = Vec3(v(rng), v(rng), v(rng));
+    sc.state.w_W[i] = Vec3(w(rng), w(rng), w(rng));
+  }
+  return sc;
+}
+
+// jacobian: 0 forces only, 1 closed form, 2 automatic differentiation; range(1): 1 with the
+// velocity columns (implicit solver), 0 poses only (static solver).
+void contact_forces_bench(benchmark::State& st, int jacobian) {
+  const Scene sc = sliding_scene(static_cast<int>(st.range(0)));
+  BodyForces f;
+  ForceJacobian jac;
+  jac.autodiff = jacobian == 2;
+  jac.with_velocity = st.range(1) != 0;
+  for (auto _ : st) {
+    f.f_W.assign(sc.model.bodies.size(), Vec3::Zero());
+    f.tau_W.assign(sc.model.bodies.size(), Vec3::Zero());
+    Assembler as(sc.model, sc.state, f, jacobian > 0 ? &jac : nullptr);
+    add_contact_forces(sc.model, sc.state, as);
+    benchmark::DoNotOptimize(f.f_W.data());
+  }
+  st.counters["contact_points"] = contact_summary(sc.model, sc.state).active;
+}
+void BM_ContactForces(benchmark::State& st) {
+  contact_forces_bench(st, 0);
+}
+void BM_ContactForcesJacobianClosedForm(benchmark::State& st) {
+  contact_forces_bench(st, 1);
+}
+void BM_ContactForcesJacobianAutodiff(benchmark::State& st) {
+  contact_forces_bench(st, 2);
+}
+BENCHMARK(BM_ContactForces)->Args({1000, 1})->Args({10000, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForcesJacobianClosedForm)
+    ->ArgsProduct({{1000, 10000}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ContactForcesJacobianAutodiff)
+    ->ArgsProduct({{1000, 10000}, {1, 0}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace finseg

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "collision/broadphase.hpp"
+#include "collision/contact_jacobian.hpp"
 #include "collision/contact_laws.hpp"
+#include "collision/contact_pair.hpp"
 #include "collision/narrowphase.hpp"
 #include "collision/pair_rules.hpp"
 #include "elements/assembler.hpp"
@@ -60,23 +62,6 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
   return now.z() >= 0 ? 1 : -1;
 }
 
-/// One sample point of a pair in contact.
-struct ActivePoint {
-  int dir = 0;     ///< 0: a sampled on b, 1: b sampled on a
-  int sample = 0;  ///< index into the source plate's samples
-  Vec3 r_B;        ///< sample in the source body frame, m
-  double share = 0;
-  int side = 1;
-  const ContactAnchor* anchor = nullptr;
-};
-
-/// One touching pair after the narrow phase.
-struct PairContact {
-  int a = -1, b = -1;
-  PlateShape sa, sb;
-  std::vector<ActivePoint> points;
-};
-
 /// Calls visit(const PairContact&) for every touching pair, in pair order.
 template <class Visit>
 void detect(const Model& model, const State& state, Visit&& visit) {
@@ -115,18 +100,12 @@ void detect(const Model& model, const State& state, Visit&& visit) {
   }
 }
 
-/// Per-point values reported to probes and used to update the history.
-struct PointReport {
-  Vec3 x_W, n_W, v_t;
-  double depth = 0, normal = 0, friction = 0, share = 0, penetration_rate = 0;
-  Vec3 f_t = Vec3::Zero();
-};
-
 /// Friction force of one point for scalar T (eq. 19 or the anchor spring).
+/// `report` (may be null) records which caps acted.
 template <class T>
 Vec3T<T> friction_force(const ContactDef& def, const ActivePoint& pt, const T& fn,
                         const Vec3T<T>& n, const Vec3T<T>& v_t, const BodyKin<T>& src,
-                        const BodyKin<T>& tgt) {
+                        const BodyKin<T>& tgt, PointReport* report) {
   if (def.friction == FrictionModel::Continuous ||
       (def.friction == FrictionModel::Anchor && pt.anchor == nullptr))
     return continuous_friction(def, fn, v_t);
@@ -136,9 +115,11 @@ Vec3T<T> friction_force(const ContactDef& def, const ActivePoint& pt, const T& f
   const Vec3T<T> z = src.point_W(an.r_src_B) - tgt.point_W(an.r_tgt_B);
   const Vec3T<T> z_t = z - n * n.dot(z);
   const T limit = T(an.sliding ? def.mu_dynamic : def.mu_static) * fn;
-  auto capped = [&](const Vec3T<T>& f) {
+  bool ignored = false;
+  auto capped = [&](const Vec3T<T>& f, bool& was_capped) {
     const T f2 = f.squaredNorm();
-    if (value_of(f2) <= value_of(limit) * value_of(limit)) return f;
+    was_capped = !(value_of(f2) <= value_of(limit) * value_of(limit));
+    if (!was_capped) return f;
     return value_of(f2) > 0 ? Vec3T<T>(f * (limit / sqrt(f2))) : Vec3T<T>(Vec3T<T>::Zero());
   };
   const Vec3T<T> spring = -T(pt.share * def.tangential_stiffness) * z_t;
@@ -146,8 +127,10 @@ Vec3T<T> friction_force(const ContactDef& def, const ActivePoint& pt, const T& f
   // Sticking, the damper acts beside the capped spring: capping their sum takes the damping
   // away just when a load comes on, and the spring then overshoots the static limit (a plate
   // set down on an incline at 26 deg slid off with mu_s = 0.5). Sliding, the sum is capped.
-  if (!an.sliding) return Vec3T<T>(capped(spring) + capped(damper));
-  return capped(spring + damper);
+  bool& spring_capped = report ? report->spring_capped : ignored;
+  bool& damper_capped = report ? report->damper_capped : ignored;
+  if (!an.sliding) return Vec3T<T>(capped(spring, spring_capped) + capped(damper, damper_capped));
+  return capped(spring + damper, spring_capped);
 }
 
 /// Forces of one pair for scalar T; adds them to the two wrenches, returns elastic energy.
@@ -171,12 +154,12 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
     const T fn = T(pt.share) * normal_force(def, c.depth, rate, v0);
     energy += pt.share * contact_energy(def, value_of(c.depth));
     const Vec3T<T> v_t = v_rel - c.n_W * c.n_W.dot(v_rel);
-    const Vec3T<T> f_t = friction_force(def, pt, fn, c.n_W, v_t, src, tgt);
+    PointReport r;
+    const Vec3T<T> f_t = friction_force(def, pt, fn, c.n_W, v_t, src, tgt, report ? &r : nullptr);
     const Vec3T<T> f = fn * c.n_W + f_t;
     w_src.add_force_at(f, c.x_W, src.p_W);
     w_tgt.add_force_at(-f, c.x_W, tgt.p_W);
     if (report) {
-      PointReport r;
       for (int i = 0; i < 3; ++i) {
         r.x_W[i] = value_of(c.x_W[i]);
         r.n_W[i] = value_of(c.n_W[i]);
@@ -188,6 +171,11 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
       r.friction = r.f_t.norm();
       r.share = pt.share;
       r.penetration_rate = value_of(rate);
+      r.dist = value_of(c.dist);
+      r.height = value_of(c.height);
+      r.du = value_of(c.du);
+      r.dv = value_of(c.dv);
+      r.feature = c.feature;
       report->push_back(r);
     }
   }
@@ -200,10 +188,31 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   if (!model.contact.enabled) return;
   validate_contact(model.contact, model.source);  // models built through the API
   const ContactDef& def = model.contact;
-  detect(model, state, [&](const PairContact& pc) {
-    assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
-      return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
+  if (assembler.want_jacobian() && assembler.autodiff_elements()) {
+    // The automatic-differentiation oracle of the closed form.
+    detect(model, state, [&](const PairContact& pc) {
+      assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
+        return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
+      });
     });
+    return;
+  }
+  const bool jacobian = assembler.want_jacobian();
+  const bool with_velocity = assembler.want_velocity_jacobian();
+  std::vector<PointReport> reports;
+  detect(model, state, [&](const PairContact& pc) {
+    const BodyKin<double> A = assembler.kin(pc.a), B = assembler.kin(pc.b);
+    Wrench<double> wa, wb;
+    reports.clear();
+    assembler.add_energy(evaluate_pair(def, pc, A, B, wa, wb, jacobian ? &reports : nullptr));
+    assembler.add(pc.a, wa);
+    assembler.add(pc.b, wb);
+    if (!jacobian) return;
+    const PairSlots slots = assembler.reserve_pair(pc.a, pc.b, with_velocity);
+    if (!slots.any()) return;
+    Mat12 dq = Mat12::Zero(), dv = Mat12::Zero();
+    add_contact_pair_jacobian(def, pc, reports, A, B, slots.with_velocity, dq, dv);
+    assembler.fill_pair(slots, dq, dv);
   });
 }
 

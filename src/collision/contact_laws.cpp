@@ -34,6 +34,59 @@ ContactSuggestion suggest_contact(double reduced_mass, double gravity, double de
   return s;
 }
 
+double step3_slope(double x, double x0, double h0, double x1, double h1) {
+  if (x <= x0 || x >= x1) return 0;
+  const double s = (x - x0) / (x1 - x0);
+  return (h1 - h0) * 6 * s * (1 - s) / (x1 - x0);
+}
+
+NormalForceSlopes normal_force_slopes(const ContactDef& c, double delta, double delta_dot,
+                                      double v0) {
+  NormalForceSlopes r;
+  if (!(delta > 0)) return r;
+  const double elastic = c.stiffness * std::pow(delta, c.exponent);
+  const double elastic_slope = c.stiffness * c.exponent * std::pow(delta, c.exponent - 1);
+  if (c.damping_law == ContactDamping::Impact) {
+    const double damping = step3(delta, 0.0, 0.0, c.damping_depth, c.damping);
+    r.d_delta =
+        elastic_slope + step3_slope(delta, 0.0, 0.0, c.damping_depth, c.damping) * delta_dot;
+    r.d_rate = damping;
+  } else {
+    const double v = std::max(std::abs(v0), c.min_impact_speed);
+    const double chi = hysteresis_factor(c.damping_law, c.restitution) / v;
+    r.d_delta = elastic_slope * (1 + chi * delta_dot);
+    r.d_rate = elastic * chi;
+  }
+  return r;
+}
+
+double friction_coefficient_slope(const ContactDef& c, double v) {
+  if (v <= c.stiction_speed)
+    return step3_slope(v, -c.stiction_speed, -c.mu_static, c.stiction_speed, c.mu_static);
+  return step3_slope(v, c.stiction_speed, c.mu_static, c.friction_speed, c.mu_dynamic);
+}
+
+FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t) {
+  // f = -fn g(v2) v_t with g = mu(v) / v: df/dv_t = -fn (g I + 2 g' v_t v_t^T).
+  const double v2 = v_t.squaredNorm();
+  const double vs = c.stiction_speed;
+  double g, g_slope;  // g and dg / d(v2)
+  if (v2 < 1e-6 * vs * vs) {
+    g = (c.mu_static / vs) * (1.5 - 0.5 * v2 / (vs * vs));
+    g_slope = -(c.mu_static / vs) * 0.5 / (vs * vs);
+  } else {
+    const double v = std::sqrt(v2);
+    const double mu = friction_coefficient(c, v);
+    g = mu / v;
+    g_slope = (friction_coefficient_slope(c, v) / v - mu / v2) / (2 * v);
+  }
+  FrictionSlopes r;
+  r.f = -fn * g * v_t;
+  r.d_fn = -g * v_t;
+  r.d_vt = -fn * (g * Mat3::Identity() + 2 * g_slope * v_t * v_t.transpose());
+  return r;
+}
+
 void validate_contact(const ContactDef& c, const std::string& file) {
   if (!c.enabled) return;
   auto fail = [&](const char* field, const std::string& what) {

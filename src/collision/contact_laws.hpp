@@ -90,6 +90,31 @@ Vec3T<T> continuous_friction(const ContactDef& c, const T& fn, const Vec3T<T>& v
   return -fn * ratio * v_t;
 }
 
+// Slopes of the laws above for the closed-form contact Jacobian (collision/contact_jacobian.*);
+// each takes the same branches as its law, decided on the same values.
+
+/// d step3 / dx at x.
+double step3_slope(double x, double x0, double h0, double x1, double h1);
+
+/// Partial derivatives of normal_force by delta > 0 and delta_dot where the force is
+/// positive (where normal_force clamps it to zero they are zero: the caller knows).
+struct NormalForceSlopes {
+  double d_delta = 0, d_rate = 0;
+};
+NormalForceSlopes normal_force_slopes(const ContactDef& c, double delta, double delta_dot,
+                                      double v0);
+
+/// d friction_coefficient / dv at slip speed v >= 0.
+double friction_coefficient_slope(const ContactDef& c, double v);
+
+/// continuous_friction f(fn, v_t) with df/dfn and df/dv_t.
+struct FrictionSlopes {
+  Vec3 f = Vec3::Zero();
+  Vec3 d_fn = Vec3::Zero();
+  Mat3 d_vt = Mat3::Zero();
+};
+FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t);
+
 /// Contact parameters derived for a gram-scale part (docs/contact.md, "Choosing values").
 struct ContactSuggestion {
   double stiffness = 0;             ///< K, N/m^e

@@ -36,15 +36,18 @@ inline PlateShape plate_shape(const BodyDef& b) {
   return {&b.outline_B, segment_area(b), 0.5 * b.thickness};
 }
 
-/// Offset (du, dv) of the in-plane point (u, v) from the closest point of the convex
-/// polygon, zero inside. Beside an edge it is the offset along the edge's outward normal
-/// (exact for edges along the axes); beyond a corner, the offset from the vertex.
-template <class T>
-void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
+/// Feature of a convex polygon closest to an in-plane point outside it: edge i (from vertex i
+/// to vertex i + 1) or vertex i; both -1 when the point is inside.
+struct PolygonFeature {
+  int edge = -1;
+  int vertex = -1;
+};
+
+/// The feature of `poly` closest to the in-plane point (u, v), decided on doubles.
+inline PolygonFeature closest_feature(const Outline& poly, double uu, double vv) {
   const std::size_t n = poly.size();
-  const double uu = value_of(u), vv = value_of(v);
   double best = std::numeric_limits<double>::infinity();
-  int edge = -1, vertex = -1;
+  PolygonFeature f;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 &a = poly[i], &b = poly[(i + 1) % n];
     const Vec2 e = b - a;
@@ -53,26 +56,59 @@ void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
     if (!(dn > 0)) continue;
     const double st = (e.x() / len) * (uu - a.x()) + (e.y() / len) * (vv - a.y());
     if (st >= 0 && st <= len) {
-      if (dn < best) best = dn, edge = static_cast<int>(i), vertex = -1;
+      if (dn < best) best = dn, f = {static_cast<int>(i), -1};
     } else {
       const std::size_t k = st < 0 ? i : (i + 1) % n;
       const double d = std::hypot(uu - poly[k].x(), vv - poly[k].y());
-      if (d < best) best = d, vertex = static_cast<int>(k), edge = -1;
+      if (d < best) best = d, f = {-1, static_cast<int>(k)};
     }
   }
-  if (edge >= 0) {
-    const Vec2 &a = poly[edge], e = poly[(edge + 1) % n] - a;
-    const double len = e.norm();
-    const double nx = e.y() / len, ny = -e.x() / len;
-    const T dn = T(nx) * (u - T(a.x())) + T(ny) * (v - T(a.y()));
-    du = dn * T(nx);
-    dv = dn * T(ny);
-  } else if (vertex >= 0) {
-    du = u - T(poly[vertex].x());
-    dv = v - T(poly[vertex].y());
+  return f;
+}
+
+/// Unit outward normal of edge i of a counter-clockwise polygon.
+inline Vec2 edge_normal(const Outline& poly, int i) {
+  const Vec2 e = poly[(i + 1) % poly.size()] - poly[i];
+  const double len = e.norm();
+  return {e.y() / len, -e.x() / len};
+}
+
+/// Offset (du, dv) of the in-plane point (u, v) from feature f of the polygon (zero for
+/// none): along the edge's outward normal, or from the vertex.
+template <class T>
+void feature_offset(const Outline& poly, const PolygonFeature& f, const T& u, const T& v, T& du,
+                    T& dv) {
+  if (f.edge >= 0) {
+    const Vec2& a = poly[f.edge];
+    const Vec2 nrm = edge_normal(poly, f.edge);
+    const T dn = T(nrm.x()) * (u - T(a.x())) + T(nrm.y()) * (v - T(a.y()));
+    du = dn * T(nrm.x());
+    dv = dn * T(nrm.y());
+  } else if (f.vertex >= 0) {
+    du = u - T(poly[f.vertex].x());
+    dv = v - T(poly[f.vertex].y());
   } else {
     du = dv = T(0);
   }
+}
+
+/// Offset (du, dv) of the in-plane point (u, v) from the closest point of the convex
+/// polygon, zero inside. Beside an edge it is the offset along the edge's outward normal
+/// (exact for edges along the axes); beyond a corner, the offset from the vertex.
+template <class T>
+void polygon_offset(const Outline& poly, const T& u, const T& v, T& du, T& dv) {
+  feature_offset(poly, closest_feature(poly, value_of(u), value_of(v)), u, v, du, dv);
+}
+
+/// d(du, dv) / d(u, v) of polygon_offset at feature f: n n^T beside edge n, the identity
+/// beyond a vertex, zero inside.
+inline Eigen::Matrix2d polygon_offset_slope(const Outline& poly, const PolygonFeature& f) {
+  if (f.edge >= 0) {
+    const Vec2 nrm = edge_normal(poly, f.edge);
+    return nrm * nrm.transpose();
+  }
+  if (f.vertex >= 0) return Eigen::Matrix2d::Identity();
+  return Eigen::Matrix2d::Zero();
 }
 
 /// One sample point of a plate: position in the body frame (mid-surface) and weight.
@@ -103,6 +139,9 @@ struct PointContact {
   Vec3T<T> x_W;  ///< contact point: middle of the overlap of the two rounded surfaces, m
   T depth;       ///< r_src + r_tgt - distance, m (> 0: in contact)
   T height;      ///< signed distance of p_W from the target mid-plane, m
+  T dist;        ///< distance from the target polygon (side * height over its face), m
+  T du, dv;      ///< in-plane offset from the target polygon (target frame; 0 over the face)
+  PolygonFeature feature;  ///< the polygon's closest feature (none: over the face)
 };
 
 /// Contact of the source point p_W (on a plate of half thickness r_src) with the target
@@ -116,10 +155,13 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
   const Vec3T<T> ex = tgt.R_WB.col(0), ey = tgt.R_WB.col(1), ez = tgt.R_WB.col(2);
   const Vec3T<T> d = p_W - tgt.p_W;
   const T u = ex.dot(d), v = ey.dot(d), h = ez.dot(d);
-  T du, dv;
-  polygon_offset(*st.outline, u, v, du, dv);
   PointContact<T> c;
+  c.feature = closest_feature(*st.outline, value_of(u), value_of(v));
+  T du, dv;
+  feature_offset(*st.outline, c.feature, u, v, du, dv);
   c.height = h;
+  c.du = du;
+  c.dv = dv;
   T dist;
   if (value_of(du) == 0 && value_of(dv) == 0) {
     dist = T(static_cast<double>(side)) * h;
@@ -128,6 +170,7 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
     dist = sqrt(du * du + dv * dv + h * h);
     c.n_W = (du * ex + dv * ey + h * ez) / dist;
   }
+  c.dist = dist;
   c.depth = T(r_src + st.r) - dist;
   c.x_W = p_W - c.n_W * ((dist + T(r_src - st.r)) / T(2));
   return c;
