@@ -1,20 +1,15 @@
 // finseg command line: a thin layer over the library.
 #include <fmt/format.h>
-#include <malloc.h>
 
 #include <exception>
 
 #include "apps/finseg/commands.hpp"
+#include "core/allocator.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 
 int main(int argc, char** argv) {
-  // Newton iterations allocate and free their matrices and states many times per second; by
-  // default glibc hands freed memory back to the kernel each time (trim above 128 KiB, large
-  // blocks mapped and unmapped), and the page faults and TLB flushes that follow took a fifth
-  // of condition 1's run (BENCHMARKS.md, "Folded strip"). Keep up to 256 MiB of it instead.
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  finseg::keep_freed_memory();  // also done by run_solver; here for the generators' solves
   CLI::App app{"finseg: finite-segment simulation of folded flexible sheets"};
   app.set_version_flag(
       "--version", fmt::format("finseg {} (git {})", finseg::version(), finseg::git_revision()));

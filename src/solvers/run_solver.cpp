@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 
+#include "core/allocator.hpp"
 #include "core/error.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/stop_request.hpp"
@@ -39,6 +40,7 @@ double output_interval(const SolverSettings& s) {
 
 SolverStats run_solver(const Model& model, State& state, const SolverSettings& settings,
                        const OutputCallback& on_output, const ProgressCallback& on_progress) {
+  keep_freed_memory();  // from the library too: benchmarks, tests and the Python module
   SolverStats stats;
   const auto start = std::chrono::steady_clock::now();
   // Every solver, present or future, stops at its outputs: the wrapper checks the flag after
