@@ -157,11 +157,20 @@ Mat3 left_jacobian_inverse_transpose_derivative(const Vec3& th, const Vec3& w) {
          cp_over_t * th.cross(th.cross(w)) * th.transpose();
 }
 
-// g = Jl^-T v, v = diag(k) theta: Jl^-T diag(k) plus the derivative at fixed v.
+// g = Jl^-T v, v = diag(k) theta: Jl^-T diag(k) plus the derivative at fixed v, multiplied
+// out (this order of the sums is the one the paper conditions' round-off-sensitive paths were
+// measured with).
 Mat3 rotational_spring_derivative(const Vec3& th, const Vec3& k) {
+  const double t2 = th.squaredNorm();
+  double c = 0, cp_over_t = 0;
+  left_jacobian_coefficients(t2, c, cp_over_t);
   const Vec3 v = k.cwiseProduct(th);
-  return left_jacobian_inverse(th).transpose() * k.asDiagonal() +
-         left_jacobian_inverse_transpose_derivative(th, v);
+  const Mat3 Kd = k.asDiagonal();
+  const Vec3 th_th_v = th.cross(th.cross(v));
+  return Kd + 0.5 * (-hat(v) + hat(th) * Kd) +
+         c * (th.dot(v) * Mat3::Identity() + 2 * th * v.transpose() - t2 * Kd -
+              2 * v * th.transpose()) +
+         cp_over_t * th_th_v * th.transpose();
 }
 
 void element_jacobian(const ElementDef& e, const CreaseDef* crease, const ElementHistory& hist,

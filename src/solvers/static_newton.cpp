@@ -130,7 +130,7 @@ bool tunnelled(const Model& model, const State& state) {
 }
 
 // A Newton trial turning a body by more than this (rad) is checked for tunnelling.
-constexpr double kLongTurn = 0.1;
+constexpr double kLongTurn = 0.25;
 
 // Newton from the current state at the current load scale and drive positions; with
 // stall_iteration > 0 it gives up when stalled (kStallDrop).
