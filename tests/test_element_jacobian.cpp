@@ -95,6 +95,30 @@ TEST(ElementJacobian, FoldedStripWithMeasuredCreaseLawsAgreesWithAutodiff) {
   }
 }
 
+// The drive's gauge (an isotropic spring and damper from a point off the centroid to the
+// moving target), damped and moving, on the damped plate.
+TEST(ElementJacobian, DriveGaugeAgreesWithAutodiff) {
+  Model m = build_sheet_model(damped_plate());
+  DriveDef d;
+  d.name = "pull";
+  d.body = static_cast<int>(m.bodies.size()) - 1;
+  d.point_B = Vec3(4e-3, -3e-3, 1e-4);
+  d.start_W = m.bodies[d.body].p0_W + m.bodies[d.body].R0_WB * d.point_B;
+  d.direction_W = Vec3(0.6, 0, 0.8);
+  d.stiffness = 200;
+  d.damping = 0.7;
+  d.speed = 0.05;
+  d.travel = 0.02;
+  m.drives.push_back(d);
+  for (const double amplitude : {0.0, 0.05, 0.4}) {
+    State st = initial_state(m);
+    st.drive_s.assign(1, 4e-3);
+    perturb(m, st, amplitude);
+    SCOPED_TRACE(amplitude);
+    expect_closed_form_matches_autodiff(m, st);
+  }
+}
+
 TEST(ElementJacobian, RotationalSpringDerivativeMatchesCentralDifferences) {
   const Vec3 k(0.7, 0.2, 1.3);
   const auto g = [&](const Vec3& th) {

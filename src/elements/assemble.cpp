@@ -4,6 +4,7 @@
 #include "elements/assembler.hpp"
 #include "elements/chamber_gas.hpp"
 #include "elements/crease_history.hpp"
+#include "elements/drive_gauge.hpp"
 #include "elements/force_elements.hpp"
 #include "elements/membrane_cells.hpp"
 #include "elements/plate_cells.hpp"
@@ -45,27 +46,6 @@ void add_loads_and_gravity(const Model& model, const State& state, Assembler& as
   }
 }
 
-double drive_rate(const DriveDef& d, const State& state, int i) {
-  return (d.travel > 0 && state.drive_s[i] >= d.travel) ? 0.0 : d.speed;
-}
-
-void add_drives(const Model& model, const State& state, Assembler& as) {
-  for (size_t i = 0; i < model.drives.size(); ++i) {
-    const DriveDef& d = model.drives[i];
-    const Vec3 target = d.start_W + state.drive_s[i] * d.direction_W;
-    const Vec3 target_v = drive_rate(d, state, static_cast<int>(i)) * d.direction_W;
-    as.single(d.body, [&](const auto& A, auto& w) {
-      using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
-      const Vec3T<T> P = A.point_W(d.point_B);
-      const Vec3T<T> stretch = P - target.cast<T>();
-      const Vec3T<T> f =
-          -d.stiffness * stretch - d.damping * (A.point_velocity_W(d.point_B) - target_v.cast<T>());
-      w.add_force_at(f, P, A.p_W);
-      return T(0.5 * d.stiffness) * stretch.squaredNorm();
-    });
-  }
-}
-
 }  // namespace
 
 void compute_forces(const Model& model, const State& state, BodyForces& out, ForceJacobian* jac) {
@@ -80,7 +60,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   add_loads_and_gravity(model, state, as);
   add_pressure_loads(model, state, as);
   add_chamber_pressures(model, state, as);
-  add_drives(model, state, as);
+  add_drive_gauges(model, state, as);
   add_contact_forces(model, state, as);
   if (jac) {
     jac->dq_blocks.to_sparse(model.num_dofs, jac->dq);
@@ -114,15 +94,6 @@ Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces)
     g.segment<3>(d + 3) = forces.tau_W[i];
   }
   return g;
-}
-
-Vec3 drive_force(const Model& model, const State& state, int i) {
-  const DriveDef& d = model.drives[i];
-  const Vec3 P = state.p_W[d.body] + state.R_WB[d.body] * d.point_B;
-  const Vec3 vP = state.v_W[d.body] + state.w_W[d.body].cross(state.R_WB[d.body] * d.point_B);
-  const Vec3 target = d.start_W + state.drive_s[i] * d.direction_W;
-  const Vec3 target_v = drive_rate(d, state, i) * d.direction_W;
-  return -d.stiffness * (P - target) - d.damping * (vP - target_v);
 }
 
 void commit_history(const Model& model, State& state) {

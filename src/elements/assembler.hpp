@@ -136,6 +136,14 @@ class Assembler {
     jac_->dq_blocks.add(ra, cb, block);
   }
 
+  /// Adds d(wrench on body a)/d(velocity and angular velocity of body b), world frame, when
+  /// the velocity Jacobian is wanted (no-op otherwise or when either body is fixed).
+  void add_velocity_block(int a, int b, const Mat6& block) {
+    const int ra = model_.dof_of_body[a], cb = model_.dof_of_body[b];
+    if (!want_velocity_ || ra < 0 || cb < 0) return;
+    jac_->dv_blocks.add(ra, cb, block);
+  }
+
   /// Adds potential energy that has no force of its own (bookkeeping).
   void add_energy(double e) { out_.potential_energy += e; }
 

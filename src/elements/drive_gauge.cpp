@@ -1,0 +1,73 @@
+#include "elements/drive_gauge.hpp"
+
+#include "core/so3.hpp"
+#include "elements/assemble.hpp"
+#include "elements/assembler.hpp"
+
+namespace finseg {
+namespace {
+
+// Drive i's target and its velocity: the drive stops moving at its travel.
+struct Target {
+  Vec3 x_W, v_W;
+};
+
+Target target_of(const DriveDef& d, const State& state, int i) {
+  const double rate = (d.travel > 0 && state.drive_s[i] >= d.travel) ? 0.0 : d.speed;
+  return {d.start_W + state.drive_s[i] * d.direction_W, rate * d.direction_W};
+}
+
+// f = -k (x - X) - c (v + w x r - V) at the point x = p + r, its moment r x f about the
+// centroid. With dx = dp - [r]x dphi and d(w x r) = -[w]x [r]x dphi + ... (world-frame
+// increments): df/dp = -k, df/dphi = k [r]x + c [w]x [r]x, dm = -[f]x dr + [r]x df;
+// df/dv = -c, df/dw = c [r]x.
+Vec3 gauge_force(const DriveDef& d, const Target& tgt, const State& s) {
+  const Vec3 r = s.R_WB[d.body] * d.point_B;
+  const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
+  return -d.stiffness * (s.p_W[d.body] + r - tgt.x_W) - d.damping * (v_P - tgt.v_W);
+}
+
+void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assembler& as) {
+  const Vec3 r = s.R_WB[d.body] * d.point_B, stretch = s.p_W[d.body] + r - tgt.x_W;
+  const Vec3 f = gauge_force(d, tgt, s);
+  as.add(d.body, {f, r.cross(f)});
+  as.add_energy(0.5 * d.stiffness * stretch.squaredNorm());
+  const Mat3 hr = hat(r), I = Mat3::Identity();
+  const Mat3 df_dphi = d.stiffness * hr + d.damping * hat(s.w_W[d.body]) * hr;
+  Mat6 q;
+  q << -d.stiffness * I, df_dphi, -d.stiffness * hr, hat(f) * hr + hr * df_dphi;
+  as.add_pose_block(d.body, d.body, q);
+  if (d.damping == 0) return;
+  Mat6 v;
+  v << -d.damping * I, d.damping * hr, -d.damping * hr, d.damping * hr * hr;
+  as.add_velocity_block(d.body, d.body, v);
+}
+
+}  // namespace
+
+Vec3 drive_force(const Model& model, const State& state, int i) {
+  const DriveDef& d = model.drives[i];
+  return gauge_force(d, target_of(d, state, i), state);
+}
+
+void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
+  for (size_t i = 0; i < model.drives.size(); ++i) {
+    const DriveDef& d = model.drives[i];
+    const Target tgt = target_of(d, state, static_cast<int>(i));
+    if (!as.autodiff_elements()) {
+      add_closed_form(d, tgt, state, as);
+      continue;
+    }
+    as.single(d.body, [&](const auto& A, auto& w) {
+      using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
+      const Vec3T<T> P = A.point_W(d.point_B);
+      const Vec3T<T> stretch = P - tgt.x_W.cast<T>();
+      const Vec3T<T> f =
+          -d.stiffness * stretch - d.damping * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
+      w.add_force_at(f, P, A.p_W);
+      return T(0.5 * d.stiffness) * stretch.squaredNorm();
+    });
+  }
+}
+
+}  // namespace finseg

@@ -1,0 +1,17 @@
+// The gauge spring of a drive (paper: the force gauge between the slide and the sheet): an
+// isotropic spring and damper from a body point to the drive's moving target, with its
+// closed-form Jacobian (docs/solvers.md, "Closed-form Jacobians").
+#pragma once
+
+#include "model/model.hpp"
+#include "model/state.hpp"
+
+namespace finseg {
+
+class Assembler;
+
+/// Adds every drive's gauge force, energy and (when asked) Jacobian: closed form, or the
+/// automatic differentiation of the same kernel when ForceJacobian::autodiff (the oracle).
+void add_drive_gauges(const Model& model, const State& state, Assembler& as);
+
+}  // namespace finseg
