@@ -204,12 +204,19 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
     BodyForces trial;
     double best_r = INFINITY;
     State best = base;
+    // Neither merit sees a plate carried through another before their contact switched on
+    // (a soft mode where contacts start at zero depth: a Newton step of hundreds of rad, cut
+    // to 1 rad above). Checked for long trials only, which can jump a layer; such a trial is
+    // neither accepted nor kept as the best.
+    const auto jumps_a_layer = [&](double a) {
+      return a * largest_turn > kLongTurn && tunnelled(model, state);
+    };
     // Sufficient decrease of the trial in `state` with forces `trial`; keeps the best residual.
     const auto acceptable = [&](double a) {
       const double r = residual_norm(model, trial);
       const double u = trial.potential_energy - a * moment_power;
       const bool energy_ok = slope < 0 && u <= u0 + 1e-4 * a * slope;
-      if (r < best_r) best_r = r, best = state;
+      if (r < best_r && !jumps_a_layer(a)) best_r = r, best = state;
       return energy_ok || r <= (1 - 1e-4 * a) * r0;
     };
     bool accepted = false;
@@ -221,12 +228,7 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
       accepted = acceptable(alpha) ||
                  (stall_iteration == 0 && solve_translations(model, state, trial, stats) &&
                   acceptable(alpha));
-      // Neither merit sees a plate carried through another before their contact switched on
-      // (a soft mode where contacts start at zero depth: a Newton step of hundreds of rad,
-      // cut to 1 rad above). Checked for long steps only, whose trials can jump a layer.
-      if (accepted && alpha * largest_turn > kLongTurn && tunnelled(model, state)) {
-        accepted = false;
-      }
+      if (accepted && jumps_a_layer(alpha)) accepted = false;
     }
     if (!accepted) state = best;
   }
