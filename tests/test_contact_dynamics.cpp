@@ -14,7 +14,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_dynamics_test {
 
 constexpr double kG = 9.81;
 constexpr double kThick = 2e-4;  // plate thickness, m
@@ -519,5 +519,5 @@ TEST(ContactDynamics, FoldedPanelsPressedTogetherNeverPassThrough) {
   EXPECT_GT(sum.total_normal_force, 3 * 100 * mass * kG);
 }
 
-}  // namespace
+}  // namespace contact_dynamics_test
 }  // namespace finseg

@@ -19,7 +19,7 @@
 #include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_jacobian_test {
 
 Model pressed_box(double pressure) {
   Model m;
@@ -168,5 +168,5 @@ TEST(ChamberJacobian, LidOnSoftSpringsRisesAsTheGasLawSays) {
   ::testing::Test::RecordProperty("newton_iterations", std::to_string(stats.newton_iterations));
 }
 
-}  // namespace
+}  // namespace gas_jacobian_test
 }  // namespace finseg

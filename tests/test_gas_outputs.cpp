@@ -14,7 +14,7 @@
 #include "writers/run_outputs.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_outputs_test {
 
 using test::TempDir;
 
@@ -123,5 +123,5 @@ TEST(GasOutputs, ChamberCsvPlotSummaryHtmlAndEnergyWork) {
   EXPECT_GT(energy.back()[w], 0);
 }
 
-}  // namespace
+}  // namespace gas_outputs_test
 }  // namespace finseg

@@ -7,7 +7,6 @@
 #include <Eigen/Dense>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "core/error.hpp"
@@ -18,8 +17,6 @@
 
 namespace finseg {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Fixed anchor (body 0) and one moving body (body 1) joined by one bushing.
 Model two_body_model(const BodyDef& moving, const ElementDef& joint, const Vec3& gravity,

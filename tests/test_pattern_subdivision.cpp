@@ -22,7 +22,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace pattern_subdivision_test {
 
 // Cells convex and covering each face exactly; every interior cell side shared by two cells
 // (Euler's V - E + F = 1 for a disc fails at a hanging vertex); `on_edges` cell sides on the
@@ -355,5 +355,5 @@ TEST(PatternSubdivision, BadSubdivisionsAndEdgeListsAreRefusedNamingTheField) {
           "missing");
 }
 
-}  // namespace
+}  // namespace pattern_subdivision_test
 }  // namespace finseg

@@ -11,7 +11,7 @@
 #include "scene/scene_reader.hpp"
 
 namespace finseg {
-namespace {
+namespace scene_overrides_test {
 
 const char* kScene =
     "material: {youngs_modulus: 4e9, density: 800}\n"
@@ -90,5 +90,5 @@ TEST(SceneOverrides, RunRecordsThemAndResumeNeedsTheSame) {
   EXPECT_NE(r.err.find("scene_hash"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace scene_overrides_test
 }  // namespace finseg

@@ -23,7 +23,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_plate_test {
 
 constexpr double kA = 0.1, kT = 1e-3, kE = 1e9, kNu = 0.3, kRho = 1000;
 constexpr double kD = kE * kT * kT * kT / (12 * (1 - kNu * kNu));
@@ -149,5 +149,5 @@ TEST(PlateValidation, ExamplePlateSceneMatchesNavier) {
   EXPECT_NEAR(w / (0.00406235 * 2.5 * 1e-4 / D), 1, 2e-3) << w;
 }
 
-}  // namespace
+}  // namespace validation_plate_test
 }  // namespace finseg

@@ -13,7 +13,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_plate_free_test {
 
 constexpr double kW = 0.02, kT = 1e-4, kE = 3e9, kNu = 0.3;
 
@@ -95,5 +95,5 @@ TEST(PlateFreeEdges, TorsionOfAStripMatchesSaintVenantFromFourRows) {
   }
 }
 
-}  // namespace
+}  // namespace validation_plate_free_test
 }  // namespace finseg

@@ -17,7 +17,7 @@
 #include "patterns/segment_mesh.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_plate_hessian_test {
 
 constexpr double kE = 1e9, kT = 1e-3, kNu = 0.3;
 constexpr double kD = kE * kT * kT * kT / (12 * (1 - kNu * kNu));
@@ -196,5 +196,5 @@ TEST_P(PlateHessian, OnlyUniformTiltsAreFreeOfEnergy) {
 INSTANTIATE_TEST_SUITE_P(Triangulations, PlateHessian, ::testing::Values(false, true),
                          [](const auto& info) { return info.param ? "Fans" : "Diagonals"; });
 
-}  // namespace
+}  // namespace validation_plate_hessian_test
 }  // namespace finseg

@@ -21,7 +21,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_plate_tri_test {
 
 constexpr double kA = 0.1, kT = 1e-3, kE = 1e9, kNu = 0.3, kRho = 1000;
 constexpr double kD = kE * kT * kT * kT / (12 * (1 - kNu * kNu));
@@ -212,5 +212,5 @@ TEST(PlateTriangles, DefaultBendingIsTheHessianOnTrianglesAndTheCorrectionsOnQua
   }
 }
 
-}  // namespace
+}  // namespace validation_plate_tri_test
 }  // namespace finseg

@@ -13,7 +13,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_plate_tri_free_test {
 
 constexpr double kW = 0.02, kT = 1e-4, kE = 3e9, kNu = 0.3;
 
@@ -130,5 +130,5 @@ TEST(PlateTrianglesFree, TorsionOfAStripApproachesSaintVenant) {
   EXPECT_LT(std::abs(errors.back()), 0.01);
 }
 
-}  // namespace
+}  // namespace validation_plate_tri_free_test
 }  // namespace finseg

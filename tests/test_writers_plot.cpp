@@ -14,7 +14,7 @@
 namespace fs = std::filesystem;
 using namespace finseg;
 
-namespace {
+namespace writers_plot_test {
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -42,8 +42,6 @@ PlotSpec sample_spec() {
   spec.markers = {{12.0, "contact begins"}, {38.0, "panels 2 and 5 bend"}};
   return spec;
 }
-
-}  // namespace
 
 TEST(PlotWriter, WritesAPngWithDataAndScriptBeside) {
   const writer_test::TempDir tmp("plot_png");
@@ -144,3 +142,5 @@ TEST(PlotWriter, UnfinishedRunBannerBandAndPeakPoints) {
   spec.bands[0].upper.pop_back();
   EXPECT_THROW(write_plot(svg.string(), spec), std::invalid_argument);
 }
+
+}  // namespace writers_plot_test

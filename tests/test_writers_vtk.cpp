@@ -17,7 +17,7 @@
 namespace fs = std::filesystem;
 using namespace finseg;
 
-namespace {
+namespace writers_vtk_test {
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);
@@ -46,8 +46,6 @@ Model two_box_model() {
   m.bodies = {a, b};
   return m;
 }
-
-}  // namespace
 
 TEST(VtkWriter, BoxesParseBackWithHandComputedCorners) {
   const Model m = two_box_model();
@@ -149,3 +147,5 @@ TEST(VtkWriter, RefusesFramesThatDoNotFitTheModel) {
   s.frames[2].R_WB[0](0, 0) = std::nan("");
   EXPECT_THROW(write_vtk_series(dir.string(), "bad", s.model, s.frames), InputError);
 }
+
+}  // namespace writers_vtk_test

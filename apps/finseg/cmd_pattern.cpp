@@ -78,7 +78,7 @@ void register_read(CLI::App* pattern, const char* name, const char* what, bool i
   });
 }
 
-void register_zigzag(CLI::App* pattern) {
+void register_zigzag_pattern(CLI::App* pattern) {
   auto spec = std::make_shared<ZigzagSpec>();
   auto deg = std::make_shared<double>(80);
   auto out = std::make_shared<std::string>();
@@ -218,7 +218,7 @@ void register_pattern(CLI::App& app) {
   pattern->require_subcommand(1);
   register_read(pattern, "check", "validate a FOLD file and print its counts", false);
   register_read(pattern, "info", "check, then print extent, face sizes and fold angles", true);
-  register_zigzag(pattern);
+  register_zigzag_pattern(pattern);
   register_tube(pattern);
 }
 

@@ -22,7 +22,7 @@ Attachment attachment(const State& s, int body, const Vec3& c_B) {
 
 // One side of a cell at the current state: its two points, their separation u and the force
 // f = sign R_WB (m_k, 0) that the outer point takes (the inner one -f).
-struct SideNow {
+struct MembraneSideNow {
   int inner = -1, outer = -1;
   Attachment a_in, a_out;
   Vec3 u_W, f_W;
@@ -38,15 +38,15 @@ void add_point_motion(Eigen::MatrixXd& D, int row, int col, const Vec3& r, doubl
 // its sides join): the strain part -T^T Q T and the geometric part of the turning frames and
 // levers, so that Newton stays quadratic where membrane forces are comparable to soft creases.
 Eigen::MatrixXd cell_jacobian(const MembraneCellDef& cell, const Mat3& R_WB,
-                              const std::vector<SideNow>& now, CellBodies& cb) {
+                              const std::vector<MembraneSideNow>& now, CellBodies& cb) {
   const int n = static_cast<int>(now.size()), c = 6 * cb.local(cell.body);
-  for (const SideNow& s : now) cb.local(s.inner), cb.local(s.outer);
+  for (const MembraneSideNow& s : now) cb.local(s.inner), cb.local(s.outer);
   const int nq = 6 * cb.size();
   // T: d delta / d pose.
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(2 * n, nq);
   std::vector<Eigen::MatrixXd> Du(n, Eigen::MatrixXd::Zero(3, nq));
   for (int k = 0; k < n; ++k) {
-    const SideNow& s = now[k];
+    const MembraneSideNow& s = now[k];
     add_point_motion(Du[k], 0, 6 * cb.local(s.inner), s.a_in.r_W, 1);
     add_point_motion(Du[k], 0, 6 * cb.local(s.outer), s.a_out.r_W, -1);
     const Eigen::Matrix<double, 2, 3> read = cell.sides[k].sign * R_WB.transpose().topRows<2>();
@@ -56,7 +56,7 @@ Eigen::MatrixXd cell_jacobian(const MembraneCellDef& cell, const Mat3& R_WB,
   const Eigen::MatrixXd QT = cell.Q * T;
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nq, nq);
   for (int k = 0; k < n; ++k) {
-    const SideNow& s = now[k];
+    const MembraneSideNow& s = now[k];
     const int i = 6 * cb.local(s.inner), o = 6 * cb.local(s.outer);
     // df = -[f]x dphi_cell + sign R_WB (dm_k, 0).
     Eigen::MatrixXd Df = cell.sides[k].sign * R_WB.leftCols<2>() * QT.middleRows<2>(2 * k);
@@ -77,15 +77,15 @@ Eigen::MatrixXd cell_jacobian(const MembraneCellDef& cell, const Mat3& R_WB,
 
 void add_membrane_cells(const Model& model, const State& state, Assembler& as) {
   CellBodies cb;
-  std::vector<SideNow> now;
+  std::vector<MembraneSideNow> now;
   for (const MembraneCellDef& cell : model.membrane_cells) {
     const int n = static_cast<int>(cell.sides.size());
     const Mat3& R_WB = state.R_WB[cell.body];
-    now.assign(n, SideNow{});
+    now.assign(n, MembraneSideNow{});
     Eigen::VectorXd delta(2 * n);
     for (int k = 0; k < n; ++k) {
       const ElementDef& e = model.elements[cell.sides[k].element];
-      SideNow& s = now[k];
+      MembraneSideNow& s = now[k];
       s.inner = e.inner;
       s.outer = e.outer;
       s.a_in = attachment(state, e.inner, e.c_inner_B);
@@ -98,7 +98,7 @@ void add_membrane_cells(const Model& model, const State& state, Assembler& as) {
     // dE/du_W of side k is f_k: the inner point takes -f_k, the outer +f_k, and the cell,
     // whose frame reads u, the couple u x f_k.
     for (int k = 0; k < n; ++k) {
-      SideNow& s = now[k];
+      MembraneSideNow& s = now[k];
       s.f_W = cell.sides[k].sign * (R_WB * Vec3(m[2 * k], m[2 * k + 1], 0));
       as.add(s.inner, {Vec3(-s.f_W), s.a_in.r_W.cross(-s.f_W)});
       as.add(s.outer, {s.f_W, s.a_out.r_W.cross(s.f_W)});

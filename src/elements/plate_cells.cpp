@@ -13,7 +13,7 @@ namespace {
 // One side of a cell at the current state: the element's frame F (on its outer body), the
 // relative rotation theta = log(R_FE) (F components) and its inverse left Jacobian, and
 // A = sign (R_BF theta).head<2> / theta, which reads the side's measurement Theta = A theta.
-struct SideNow {
+struct PlateSideNow {
   int inner = -1, outer = -1;
   Mat3 R_WF;
   Vec3 theta_F;
@@ -22,9 +22,9 @@ struct SideNow {
   Vec3 g_F;  // the couple's F components: Jl^-T A^T m_k (on the outer body; -R_WF g on the inner)
 };
 
-SideNow side_now(const Model& model, const State& s, const PlateCellSide& side) {
+PlateSideNow side_now(const Model& model, const State& s, const PlateCellSide& side) {
   const ElementDef& e = model.elements[side.element];
-  SideNow n;
+  PlateSideNow n;
   n.inner = e.inner;
   n.outer = e.outer;
   n.R_WF = s.R_WB[e.outer] * e.R_outer_F;
@@ -38,15 +38,15 @@ SideNow side_now(const Model& model, const State& s, const PlateCellSide& side) 
 // The exact Jacobian of the cell's couples over its local bodies' rotations (3 per body).
 // d theta_k = Jl^-1 R_WF^T (dphi_inner - dphi_outer); d g_k = H_k d theta_k + Jl^-T A^T dm_k
 // with H_k the turning of Jl^-T at fixed A^T m_k; and R_WF turns with the outer body.
-Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<SideNow>& now,
+Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& now,
                               const Eigen::VectorXd& m, CellBodies& cb) {
   const int n = static_cast<int>(now.size());
-  for (const SideNow& s : now) cb.local(s.inner), cb.local(s.outer);
+  for (const PlateSideNow& s : now) cb.local(s.inner), cb.local(s.outer);
   const int nr = 3 * cb.size();
   std::vector<Eigen::MatrixXd> dtheta(n, Eigen::MatrixXd::Zero(3, nr));
   Eigen::MatrixXd T(2 * n, nr);
   for (int k = 0; k < n; ++k) {
-    const SideNow& s = now[k];
+    const PlateSideNow& s = now[k];
     const Mat3 U = s.Jl_inv * s.R_WF.transpose();
     dtheta[k].middleCols<3>(3 * cb.local(s.inner)) += U;
     dtheta[k].middleCols<3>(3 * cb.local(s.outer)) -= U;
@@ -55,7 +55,7 @@ Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<SideNo
   const Eigen::MatrixXd QT = cell.Q * T;
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, nr);
   for (int k = 0; k < n; ++k) {
-    const SideNow& s = now[k];
+    const PlateSideNow& s = now[k];
     const Vec3 w = s.A.transpose() * m.segment<2>(2 * k);
     const Eigen::MatrixXd dg =
         left_jacobian_inverse_transpose_derivative(s.theta_F, w) * dtheta[k] +
@@ -72,7 +72,7 @@ Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<SideNo
 }  // namespace
 
 void add_plate_cells(const Model& model, const State& state, Assembler& as) {
-  std::vector<SideNow> now;
+  std::vector<PlateSideNow> now;
   CellBodies cb;
   for (const PlateCellDef& cell : model.plate_cells) {
     const int n = static_cast<int>(cell.sides.size());
@@ -87,7 +87,7 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
     // dE = sum_k m_k . A_k Jl_k^-1 R_WF^T (dphi_inner - dphi_outer): the inner body takes
     // -R_WF Jl^-T A^T m_k, the outer the opposite.
     for (int k = 0; k < n; ++k) {
-      SideNow& s = now[k];
+      PlateSideNow& s = now[k];
       s.g_F = s.Jl_inv.transpose() * (s.A.transpose() * m.segment<2>(2 * k));
       const Vec3 tau = -s.R_WF * s.g_F;
       as.add(s.inner, {Vec3::Zero(), tau});

@@ -18,13 +18,13 @@
 #include "elements/crease_laws/shifted.hpp"
 #include "generators/plate_cell_fit.hpp"
 #include "generators/plate_hessian.hpp"
+#include "generators/sheet.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/segment_mesh.hpp"
 
 namespace finseg {
 namespace {
 
-constexpr double kShearCorrection = 5.0 / 6.0;
 constexpr double kSeamFlat = 1e-9;  // rad: a seam kinked less than this is flat (round-off)
 
 void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std::string& src) {

@@ -16,8 +16,6 @@
 namespace finseg {
 namespace {
 
-constexpr double kShearCorrection = 5.0 / 6.0;
-
 void validate_spec(const SheetSpec& s) {
   require_positive(s.length, "<api>", "sheet.length", "m");
   require_positive(s.width, "<api>", "sheet.width", "m");

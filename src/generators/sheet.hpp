@@ -13,6 +13,10 @@ namespace finseg {
 
 class CreaseLaw;
 
+/// Timoshenko's shear correction of a rectangular section (5/6): the joints' transverse shear
+/// springs (docs/stiffness.md).
+inline constexpr double kShearCorrection = 5.0 / 6.0;
+
 /// A fold line across the sheet at material coordinate s (m from the start).
 struct FoldSpec {
   double s = 0;      ///< m

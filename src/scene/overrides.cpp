@@ -55,8 +55,9 @@ YAML::Node value_node(const Override& o, const std::string& file) {
   try {
     return YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
-    throw InputError(file, o.path,
-                     fmt::format("--set value {} is not valid YAML: {}", quoted(o.value), e.msg));
+    throw InputError(
+        file, o.path,
+        fmt::format("--set value {} is not valid YAML: {}", finseg::quoted(o.value), e.msg));
   }
 }
 
@@ -65,11 +66,12 @@ YAML::Node value_node(const Override& o, const std::string& file) {
 Override parse_override(const std::string& text) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos) {
-    throw InputError("--set", quoted(text), "expected KEY.PATH=VALUE, e.g. solver.t_end=0.5");
+    throw InputError("--set", finseg::quoted(text),
+                     "expected KEY.PATH=VALUE, e.g. solver.t_end=0.5");
   }
   Override o{text.substr(0, eq), text.substr(eq + 1)};
   for (const std::string& part : split_path(o.path)) {
-    if (part.empty()) throw InputError("--set", quoted(o.path), "a path part is empty");
+    if (part.empty()) throw InputError("--set", finseg::quoted(o.path), "a path part is empty");
   }
   return o;
 }
