@@ -10,6 +10,9 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "elements/chamber_gas.hpp"
@@ -162,6 +165,61 @@ TEST(MiuraTube, CappedTubeIsAClosedChamberOfTheClosedFormVolume) {
   Model m = tube_model(miura_tube_crease_pattern(open), 1);
   m.chambers.push_back(whole_chamber(m));
   EXPECT_THROW(prepare_chambers(m), InputError);
+}
+
+// Soft seams (PatternSheetSpec::soft_seams): the joints across the listed seams have their
+// in-plane springs (T1, T2, theta3) scaled, the others kept; no other joint's out-of-plane
+// springs change; bad lists refused naming the field.
+TEST(MiuraTube, SoftSeamsScaleTheInPlaneSpringsOfTheirJointsOnly) {
+  const MiuraTubeSpec s = tube(80, 3);
+  const CreasePattern p = miura_tube_crease_pattern(s);
+  const Model stiff = tube_model(p, 1);
+  PatternSheetSpec spec;
+  spec.thickness = 1e-4;
+  spec.youngs_modulus = 3e9;
+  spec.poisson_ratio = 0.3;
+  spec.density = 1000;
+  spec.mountain_law = spec.valley_law = std::make_shared<LinearCreaseLaw>(0.01, 0.0);
+  spec.laws_rest_at_pattern = true;
+  const int first_cap_seam = 2 * s.columns;  // after the two ridge lines
+  spec.soft_seams = {{{first_cap_seam, first_cap_seam + 5}, 1e-3}};
+  const Model soft = build_pattern_model(p, spec, "<miura tube>");
+  ASSERT_EQ(soft.elements.size(), stiff.elements.size());
+  int scaled = 0;
+  for (std::size_t k = 0; k < soft.elements.size(); ++k) {
+    const std::string& name = soft.elements[k].name;
+    const bool listed = name.rfind(fmt::format("seam{}_", first_cap_seam + 1), 0) == 0 ||
+                        name.rfind(fmt::format("seam{}_", first_cap_seam + 6), 0) == 0;
+    // Out of plane (T3, twist, bending) untouched; the in-plane turn scaled exactly. Stretch
+    // and shear are scaled too, but the cells beside a soft side no longer count it when their
+    // joints are limited to plane stress (limit_joints_to_plane_stress), so there the ratio
+    // is the scale over that limit (within 1.5 on these parallelograms).
+    for (int i : {2, 3, 4}) {
+      EXPECT_NEAR(soft.elements[k].K[i] / stiff.elements[k].K[i], 1.0, 1e-12) << name << " " << i;
+    }
+    EXPECT_NEAR(soft.elements[k].K[5] / stiff.elements[k].K[5], listed ? 1e-3 : 1.0, 1e-12) << name;
+    for (int i : {0, 1}) {
+      const double ratio = soft.elements[k].K[i] / stiff.elements[k].K[i];
+      EXPECT_GE(ratio, listed ? 1e-3 * (1 - 1e-12) : 1 / 1.5) << name << " " << i;
+      EXPECT_LE(ratio, listed ? 1.5e-3 : 1.5) << name << " " << i;
+    }
+    scaled += listed;
+  }
+  EXPECT_EQ(scaled, 2);  // one cell side per seam at one segment per face
+  auto refused = [&](std::vector<SoftSeams> lists, const std::string& field) {
+    PatternSheetSpec bad = spec;
+    bad.soft_seams = std::move(lists);
+    try {
+      build_pattern_model(p, bad, "<miura tube>");
+      ADD_FAILURE() << field << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), field) << e.what();
+    }
+  };
+  refused({{{0}, 0.0}}, "soft_seams[0].scale");
+  refused({{{0}, 1.5}}, "soft_seams[0].scale");
+  refused({{{0}, 0.5}, {{static_cast<int>(p.seams.size())}, 0.5}}, "soft_seams[1].seams");
+  refused({{{3, 3}, 0.5}}, "soft_seams[0].seams");
 }
 
 TEST(MiuraTube, RefusesSpecsOutOfRange) {
