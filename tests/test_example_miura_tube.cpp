@@ -4,9 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_test_util.hpp"
+#include "core/error.hpp"
 #include "patterns/fold_format.hpp"
 #include "patterns/miura_tube_pattern.hpp"
 #include "scene/scene_reader.hpp"
@@ -90,6 +97,33 @@ TEST(ExampleMiuraTube, InflationSceneReadsAndRunsAgainstAdiabaticFilling) {
             1e-2 * c.gamma / (c.gamma - 1) * c.gas_constant * c.inflow.temperature[1] * g.injected);
   EXPECT_NEAR(g.temperature / (c.gamma * c.inflow.temperature[1]), 1, 1e-2);
   EXPECT_NEAR(g.pressure, g.mass * c.gas_constant * g.temperature / g.volume, 1e-9 * g.pressure);
+}
+
+// The scene key pattern.soft_seams: out-of-range values refused naming the field.
+TEST(ExampleMiuraTube, SceneRefusesBadSoftSeams) {
+  test::TempDir dir;
+  std::ifstream in(example("miura_inflate.yaml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string good = "scale: 1.0e-3}", scene = text.str();
+  ASSERT_NE(scene.find(good), std::string::npos);
+  std::filesystem::copy_file(example("miura.fold"), dir.path() / "miura.fold");
+  for (const auto& [bad, field] : std::vector<std::pair<std::string, std::string>>{
+           {"scale: 0}", "pattern.soft_seams[0].scale"},
+           {"scale: 1.5}", "pattern.soft_seams[0].scale"},
+           {"scale: 0.1}, {seams: [28], scale: 0.1}", "pattern.soft_seams[1].seams"},
+           {"scale: 0.1}, {seams: [20], scale: 0.1}", "pattern.soft_seams[1].seams"}}) {
+    std::string changed = scene;
+    changed.replace(changed.find(good), good.size(), bad);
+    const std::filesystem::path path = dir.path() / "bad.yaml";
+    std::ofstream(path) << changed;
+    try {
+      read_scene(path.string());
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), field) << e.what();
+    }
+  }
 }
 
 }  // namespace
