@@ -13,6 +13,7 @@
 #include "core/text.hpp"
 #include "patterns/flat_tube_pattern.hpp"
 #include "patterns/fold_format.hpp"
+#include "patterns/miura_tube_pattern.hpp"
 #include "patterns/tube_pattern.hpp"
 #include "patterns/zigzag_pattern.hpp"
 
@@ -211,6 +212,65 @@ void register_tube(CLI::App* pattern) {
   });
 }
 
+// The Miura tube (miura_tube_crease_pattern): two mirrored two-row Miura strips seamed along
+// their ridges, stowed along its length at --fold-angle.
+void register_miura_tube(CLI::App* pattern) {
+  struct Options {
+    MiuraTubeSpec spec;
+    double sector_deg = 60, fold_deg = 80;
+    bool open = false;
+    std::string out;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* c = pattern->add_subcommand(
+      "miura-tube",
+      "a closed tube of two mirrored Miura strips seamed along their ridges, stowed Z-folded "
+      "along its length (docs/fold.md, The Miura tube), as FOLD");
+  c->add_option("--columns", o->spec.columns, "panel columns along the tube, 1..1000")
+      ->capture_default_str();
+  c->add_option("--side-a", o->spec.side_a, "the rhombic section's side, m (> 0)")
+      ->capture_default_str();
+  c->add_option("--side-b", o->spec.side_b, "the panels' side along the tube, m (> 0)")
+      ->capture_default_str();
+  c->add_option("--sector-angle", o->sector_deg, "the parallelograms' acute angle, deg in (0, 90)")
+      ->capture_default_str();
+  c->add_option("--fold-angle", o->fold_deg,
+                "stowed: the panels' angle to the tube's mid-plane (Schenk and Guest's theta), "
+                "deg in (0, 90); 45 is the largest volume, towards 90 the accordion")
+      ->capture_default_str();
+  c->add_flag("--open", o->open, "leave both ends open (no rhombic caps)");
+  c->add_option("--out", o->out, "write the FOLD file to FILE instead of standard output");
+  c->callback([o] {
+    MiuraTubeSpec s = o->spec;
+    if (s.columns < 1 || s.columns > 1000) {
+      throw InputError("<cli>", "--columns", fmt::format("{}; allowed 1..1000", s.columns));
+    }
+    require_positive(s.side_a, "<cli>", "--side-a", "m");
+    require_positive(s.side_b, "<cli>", "--side-b", "m");
+    if (!(o->sector_deg > 0 && o->sector_deg < 90)) {
+      throw InputError("<cli>", "--sector-angle",
+                       fmt::format("{} deg; allowed (0, 90)", o->sector_deg));
+    }
+    if (!(o->fold_deg > 0 && o->fold_deg < 90)) {
+      throw InputError("<cli>", "--fold-angle",
+                       fmt::format("{} deg; allowed (0, 90): flat and fully folded enclose no "
+                                   "volume",
+                                   o->fold_deg));
+    }
+    s.sector_angle = o->sector_deg * kDegToRad;
+    s.fold_angle = o->fold_deg * kDegToRad;
+    s.caps = !o->open;
+    const CreasePattern p = miura_tube_crease_pattern(s);
+    fmt::print(stderr,
+               "volume {:.6g} m^3 stowed, largest {:.6g} m^3 (at 45 deg), length {:.6g} m\n",
+               miura_tube_volume(s, s.fold_angle), miura_tube_max_volume(s),
+               miura_tube_shape(s, s.fold_angle).length);
+    if (o->out.empty()) return fmt::print("{}", fold_text(p));
+    write_fold(o->out, p);
+    fmt::print(stderr, "wrote {}\n", o->out);
+  });
+}
+
 }  // namespace
 
 void register_pattern(CLI::App& app) {
@@ -220,6 +280,7 @@ void register_pattern(CLI::App& app) {
   register_read(pattern, "info", "check, then print extent, face sizes and fold angles", true);
   register_zigzag_pattern(pattern);
   register_tube(pattern);
+  register_miura_tube(pattern);
 }
 
 }  // namespace finseg::cli

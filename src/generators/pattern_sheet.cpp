@@ -68,6 +68,24 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
       listed[e] = true;
     }
   }
+  std::vector<bool> soft(p.seams.size(), false);
+  for (std::size_t k = 0; k < s.soft_seams.size(); ++k) {
+    const std::string field = fmt::format("soft_seams[{}]", k);
+    if (!(s.soft_seams[k].scale > 0 && s.soft_seams[k].scale <= 1)) {
+      throw InputError(src, field + ".scale",
+                       fmt::format("{}; allowed (0, 1]", s.soft_seams[k].scale));
+    }
+    for (int q : s.soft_seams[k].seams) {
+      if (q < 0 || q >= static_cast<int>(p.seams.size())) {
+        throw InputError(
+            src, field + ".seams",
+            p.seams.empty() ? fmt::format("seam {}: the pattern has no seams", q)
+                            : fmt::format("seam {} does not exist (0..{})", q, p.seams.size() - 1));
+      }
+      if (soft[q]) throw InputError(src, field + ".seams", fmt::format("seam {} listed twice", q));
+      soft[q] = true;
+    }
+  }
   for (int f : s.fixed_faces) {
     if (f < 0 || f >= static_cast<int>(p.faces.size())) {
       throw InputError(src, "fixtures.fixed_faces",
@@ -342,6 +360,10 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
 
   std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
   std::vector<int> link_element;
+  std::vector<double> seam_scale(p.seams.size(), 1.0);  // SoftSeams
+  for (const SoftSeams& q : spec.soft_seams) {
+    for (int k : q.seams) seam_scale[k] = q.scale;
+  }
   for (const CellLink& l : mesh.links) {
     const BodyDef &L = m.bodies[l.left], &R = m.bodies[l.right];
     // Each cell's own copy of the side (two copies across a seam, else the same side).
@@ -362,6 +384,10 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     e.R_inner_E = sides[1].frame();
     e.K = plate_joint_stiffness(spec.youngs_modulus, spec.poisson_ratio, spec.thickness, len, h);
     if (spec.bending_rigidity) e.K[3] = e.K[4] = *spec.bending_rigidity * len / h;
+    const bool soft = l.seam >= 0 && seam_scale[l.seam] < 1;
+    if (soft) {
+      for (int i : {0, 1, 5}) e.K[i] *= seam_scale[l.seam];
+    }
     e.C = spec.damping_time * e.K;
     e.name = l.seam < 0 ? fmt::format("side_c{}_c{}", l.left, l.right)
                         : fmt::format("seam{}_c{}_c{}", l.seam + 1, l.left, l.right);
@@ -397,7 +423,9 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
       CreaseDef& c = m.creases[e.crease];
       c.law = std::make_shared<SeriesCreaseLaw>(c.law, e.K[4]);
     }
-    add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, series, cell_sides);
+    if (!soft) {
+      add_cell_sides(l, sides, e, static_cast<int>(m.elements.size()), m, series, cell_sides);
+    }
     link_element.push_back(static_cast<int>(m.elements.size()));
     m.elements.push_back(e);
   }

@@ -22,6 +22,16 @@ struct EdgeCreaseLaw {
   std::shared_ptr<const CreaseLaw> law;
 };
 
+/// Seams (0-based indices into CreasePattern::seams) whose joints are made soft in the plane:
+/// each cell side across them has its in-plane springs (stretch T1, shear T2, in-plane turn
+/// theta3) scaled by `scale`, and is left out of its cells' membrane corrections, which would
+/// add the stiffness back. For a compliant band (a pleated or elastic gusset) that lets a
+/// rigid cap's edge slide against the tube end it closes (docs/fold.md, "The Miura tube").
+struct SoftSeams {
+  std::vector<int> seams;
+  double scale = 1;  ///< (0, 1]
+};
+
 /// Material, discretisation and creases of a sheet cut from a pattern. SI units.
 struct PatternSheetSpec {
   double thickness = 1e-4, youngs_modulus = 3e9, poisson_ratio = 0.3, density = 800;
@@ -41,6 +51,7 @@ struct PatternSheetSpec {
   /// Laws for chosen pattern edges (0-based), before the assignment's: e.g. a crease folded
   /// harder than the others, or an F edge made a crease. Each edge at most once.
   std::vector<EdgeCreaseLaw> edge_laws;
+  std::vector<SoftSeams> soft_seams;  ///< seams with soft in-plane joints, each at most once
   double crease_law_length = 1.0;
   /// True: each crease's law is shifted so that it rests at the crease's own fold angle in
   /// the pattern (edges_foldAngle, else the folded coordinates); false: the law's own rest.

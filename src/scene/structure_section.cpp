@@ -256,6 +256,27 @@ std::vector<EdgeCreaseLaw> read_edge_laws(const Fields& p) {
   return out;
 }
 
+// pattern.soft_seams: [{seams: [indices into the FOLD file's finseg:seams, 0-based], scale:
+// (0, 1]}, ...].
+std::vector<SoftSeams> read_soft_seams(const Fields& p) {
+  std::vector<SoftSeams> out;
+  const std::vector<YAML::Node> items =
+      sequence(p.node("soft_seams"), p.context("soft_seams"), "a list of {seams, scale}");
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Fields item(items[k], {p.context().file, item_field(p.field("soft_seams"), k)},
+                      {"seams", "scale"});
+    SoftSeams q;
+    q.seams = item.integers("seams", 0, 100000000);
+    if (q.seams.empty()) {
+      item.fail("seams", "missing or empty: list finseg:seams indices (0-based)");
+    }
+    if (!item.has("scale")) item.fail("scale", "missing");
+    q.scale = item.number("scale", interval(0, 1, true, false));
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
 // Model of a sheet cut from a FOLD crease pattern (generators/pattern_sheet.hpp).
 Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpec& base,
                          std::string& pattern_file) {
@@ -268,7 +289,8 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   if (root.has("stiffness")) root.fail("stiffness", "not available with a pattern");
   const Fields p(root.node("pattern"), root.context("pattern"),
                  {"file", "unit", "subdivisions", "segment_size", "crease_refinement", "start",
-                  "crease_law_length", "crease_rest", "mountain_law", "valley_law", "crease_laws"});
+                  "crease_law_length", "crease_rest", "mountain_law", "valley_law", "crease_laws",
+                  "soft_seams"});
   std::filesystem::path path = p.required_word("file");
   if (path.is_relative()) path = std::filesystem::path(root.context().file).parent_path() / path;
   pattern_file = path.string();
@@ -301,6 +323,7 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
     s.valley_law = read_crease_law(p.node("valley_law"), p.context("valley_law"));
   }
   s.edge_laws = read_edge_laws(p);
+  s.soft_seams = read_soft_seams(p);
   s.origin_W = sheet.vector3("origin", Vec3::Zero(), "m");
   const Fields fix = fixtures_of(root);
   if (fix.has("clamp_start")) fix.fail("clamp_start", "not available with a pattern: use panels");
@@ -330,6 +353,7 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
           return std::string("pattern.crease_refinement");
         }
         if (api.rfind("crease_laws", 0) == 0) return "pattern." + api;
+        if (api.rfind("soft_seams", 0) == 0) return "pattern." + api;
         if (api == "creases.law_length") return std::string("pattern.crease_law_length");
         return api;
       });
