@@ -6,7 +6,7 @@
 #include "elements/block_matrix.hpp"
 
 namespace finseg {
-namespace {
+namespace block_matrix_test {
 
 TEST(BlockMatrix, SumsRepeatedBlocksLikeTripletsAndLeavesEmptyColumnsEmpty) {
   const int n = 30;  // five column blocks; block column 3 gets nothing
@@ -39,5 +39,5 @@ TEST(BlockMatrix, SumsRepeatedBlocksLikeTripletsAndLeavesEmptyColumnsEmpty) {
   }
 }
 
-}  // namespace
+}  // namespace block_matrix_test
 }  // namespace finseg

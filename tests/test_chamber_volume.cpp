@@ -10,7 +10,7 @@
 #include "solvers/dofs.hpp"
 
 namespace finseg {
-namespace {
+namespace chamber_volume_test {
 
 using test::add_plate;
 
@@ -130,5 +130,5 @@ TEST(ChamberVolume, RefusesOpenOrMisorientedSurfaces) {
   expect_open(m, st, faces, "chamber[0]");
 }
 
-}  // namespace
+}  // namespace chamber_volume_test
 }  // namespace finseg

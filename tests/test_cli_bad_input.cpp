@@ -8,7 +8,7 @@
 #include "cli_test_util.hpp"
 
 namespace finseg {
-namespace {
+namespace cli_bad_input_test {
 
 using test::run_finseg;
 using test::spit;
@@ -126,5 +126,5 @@ TEST(CliBadInput, DivergedRerunReplacesAnEarlierSummary) {
   EXPECT_NE(test::slurp(dir / "out/summary.json").find("\"diverged\""), std::string::npos);
 }
 
-}  // namespace
+}  // namespace cli_bad_input_test
 }  // namespace finseg

@@ -12,7 +12,7 @@
 #include "test_paths.hpp"
 
 namespace finseg::test {
-namespace {
+namespace cli_docs_test {
 
 TEST(CliDocs, ReadmeCommandsWriteNoTrackedExampleFile) {
   // Former defect: the README's cantilever example wrote examples/cantilever/alpha2.yaml.
@@ -61,5 +61,5 @@ TEST(CliDocs, GenZigzagPullSpeedWritesTheDynamicPull) {
   EXPECT_NE(r.err.find("--pull-speed"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace cli_docs_test
 }  // namespace finseg::test

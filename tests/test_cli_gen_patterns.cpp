@@ -13,7 +13,7 @@
 #include "core/types.hpp"
 
 namespace finseg {
-namespace {
+namespace cli_gen_patterns_test {
 
 using test::run_finseg;
 using test::TempDir;
@@ -154,5 +154,5 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   EXPECT_NE(r.err.find("--sector-angle"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace cli_gen_patterns_test
 }  // namespace finseg

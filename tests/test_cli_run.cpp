@@ -11,7 +11,7 @@
 #include "core/types.hpp"
 
 namespace finseg {
-namespace {
+namespace cli_run_test {
 
 using test::csv_rows;
 using test::run_finseg;
@@ -180,5 +180,5 @@ TEST(CliRun, DivergingRunKeepsWhatItRecorded) {
   }
 }
 
-}  // namespace
+}  // namespace cli_run_test
 }  // namespace finseg

@@ -21,7 +21,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace cli_run_safety_test {
 
 namespace fs = std::filesystem;
 using test::run_finseg;
@@ -392,5 +392,5 @@ TEST(CliRunSafety, ModesAndOutputWritingReportProgress) {
   EXPECT_NE(r.err.find("finseg: [100.0%] writing 21 VTK frames to out"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace cli_run_safety_test
 }  // namespace finseg

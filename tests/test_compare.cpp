@@ -19,7 +19,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace compare_test {
 
 namespace fs = std::filesystem;
 
@@ -238,5 +238,5 @@ TEST(Compare, HugeValuesExitWithStatus2) {
   EXPECT_TRUE(WIFEXITED(rc) && WEXITSTATUS(rc) == 2) << rc;
 }
 
-}  // namespace
+}  // namespace compare_test
 }  // namespace finseg

@@ -27,7 +27,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace cone_gathered_test {
 
 using Polygon = std::vector<Vec3>;
 
@@ -224,5 +224,5 @@ TEST(ConeGathered, ExamplePullRunsWithContactOnAndPenetrationBelowAQuarterThickn
   EXPECT_LT(deepest, 0.25e-4);    // t / 4, t = 0.1 mm
 }
 
-}  // namespace
+}  // namespace cone_gathered_test
 }  // namespace finseg

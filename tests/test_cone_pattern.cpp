@@ -17,7 +17,7 @@
 #include "patterns/pattern_checks.hpp"
 
 namespace finseg {
-namespace {
+namespace cone_pattern_test {
 
 ConeSpec open_cone() {
   ConeSpec s;
@@ -225,5 +225,5 @@ TEST(ConePattern, GatheredWallIsRigidAndFoldsItsGeneratorsTowardTheirKinds) {
   EXPECT_THROW(cone_gathered(closed, cone_crease_pattern(closed), 0.5), InputError);
 }
 
-}  // namespace
+}  // namespace cone_pattern_test
 }  // namespace finseg

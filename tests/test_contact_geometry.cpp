@@ -16,7 +16,7 @@
 #include "generators/zigzag.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_geometry_test {
 
 BodyKin<double> kin(const Vec3& p, const Mat3& R = Mat3::Identity()) {
   return {p, R, Vec3::Zero(), Vec3::Zero()};
@@ -419,11 +419,11 @@ TEST(ContactRules, FoldedPanelsTouchButJoinedAndSameSheetNeighboursDoNot) {
   for (const Vec3& p : sum.points_W) EXPECT_LT(p.x(), 3 * 0.01 + 1e-9);
 }
 
-}  // namespace
+}  // namespace contact_geometry_test
 }  // namespace finseg
 
 namespace finseg {
-namespace {
+namespace contact_geometry_test {
 
 // The paper's zigzag in its initial state (80 deg, panels 20 deg apart at the creases), one
 // and two segments across: no false contact anywhere, although neighbouring segments share
@@ -446,11 +446,11 @@ TEST(ContactRules, GeneratedZigzagHasNoFalseContact) {
   }
 }
 
-}  // namespace
+}  // namespace contact_geometry_test
 }  // namespace finseg
 
 namespace finseg {
-namespace {
+namespace contact_geometry_test {
 
 // A plate tilted by 45 deg whose lowest edge hangs a height h above the middle of a flat
 // plate: the narrow phase counts it in contact where h < r_a + r_b (depth r_a + r_b - h), so
@@ -490,5 +490,5 @@ TEST(ContactBroadphase, TiltedCornerEntersTheContactWithZeroDepth) {
   }
 }
 
-}  // namespace
+}  // namespace contact_geometry_test
 }  // namespace finseg

@@ -8,7 +8,7 @@
 #include "scene/sections.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_input_test {
 
 const char* kGood = R"(
 stiffness: 1.2e5
@@ -97,5 +97,5 @@ TEST(ContactInput, ApiModelsAreCheckedToo) {
   EXPECT_THROW(validate_contact(c, "<api>"), InputError);
 }
 
-}  // namespace
+}  // namespace contact_input_test
 }  // namespace finseg

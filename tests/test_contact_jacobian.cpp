@@ -12,7 +12,7 @@
 #include "elements/assembler.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_jacobian_test {
 
 Mat3 turn(double angle, const Vec3& axis) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
@@ -273,5 +273,5 @@ TEST(ContactJacobianClosedForm, OnePlateClamped) {
   }
 }
 
-}  // namespace
+}  // namespace contact_jacobian_test
 }  // namespace finseg

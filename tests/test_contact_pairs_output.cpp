@@ -20,7 +20,7 @@
 #include "writers/run_outputs.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_pairs_output_test {
 
 using test::run_finseg;
 using test::slurp;
@@ -155,5 +155,5 @@ TEST(ContactPairsOutput, DivergedRunKeepsThePairsFile) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out/touch_pairs.csv.partial"));
 }
 
-}  // namespace
+}  // namespace contact_pairs_output_test
 }  // namespace finseg

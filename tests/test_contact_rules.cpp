@@ -10,7 +10,7 @@
 #include "contact_test_util.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_rules_test {
 
 constexpr double kL = 0.01, kT = 1e-4;
 
@@ -96,5 +96,5 @@ TEST(ContactRules, PairsInsideTheCreaseZoneNeverTouch) {
   }
 }
 
-}  // namespace
+}  // namespace contact_rules_test
 }  // namespace finseg

@@ -20,7 +20,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace contact_stack_test {
 
 struct StackResult {
   SolverStats stats;
@@ -127,5 +127,5 @@ TEST(ContactStack, FiveFinerFoldedLayersPressedTogetherStayApart) {
   check_stack(5, 3, 5.0);
 }
 
-}  // namespace
+}  // namespace contact_stack_test
 }  // namespace finseg

@@ -14,7 +14,7 @@
 #include "scene/sections.hpp"
 
 namespace finseg {
-namespace {
+namespace crease_data_test {
 
 CreaseData parse(const std::string& text, std::optional<double> lever = std::nullopt) {
   std::istringstream in(text);
@@ -195,5 +195,5 @@ TEST_F(SceneCreaseLaw, BadInputNamesField) {
             f);
 }
 
-}  // namespace
+}  // namespace crease_data_test
 }  // namespace finseg

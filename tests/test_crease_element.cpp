@@ -15,7 +15,7 @@
 #include "solvers/dofs.hpp"
 
 namespace finseg {
-namespace {
+namespace crease_element_test {
 
 Mat3 rot(const Vec3& phi) {
   return so3_exp<double>(phi);
@@ -221,5 +221,5 @@ TEST(CreaseElement, DampingAboutTheCreaseLine) {
   EXPECT_NEAR(f.tau_W[1].y(), -m.elements[0].C[4] * wy, 1e-15);
 }
 
-}  // namespace
+}  // namespace crease_element_test
 }  // namespace finseg

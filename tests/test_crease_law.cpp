@@ -13,7 +13,7 @@
 
 using namespace finseg;
 
-namespace {
+namespace crease_law_test {
 
 // A cubic moment-angle curve in degrees: M(theta_deg) = a + b u + c u^2 + d u^3, u = deg/100.
 struct Cubic {
@@ -62,8 +62,6 @@ double fd_moment(const CreaseLaw& law, double phi, const ElementHistory& h, doub
   const double e = 1e-7;
   return (law.evaluate(phi + e, h, t).moment - law.evaluate(phi - e, h, t).moment) / (2 * e);
 }
-
-}  // namespace
 
 TEST(CreaseLaw, LinearMomentIsEnergyDerivative) {
   const LinearCreaseLaw law(0.02, 1.3);
@@ -218,3 +216,5 @@ TEST(CreaseLaw, RelaxationShiftsRestAngleLogarithmically) {
   EXPECT_THROW(RelaxingCreaseLaw bad(base, c, 0, age, age_ref), InputError);
   EXPECT_THROW(RelaxingCreaseLaw bad(base, c, tau, -1, age_ref), InputError);
 }
+
+}  // namespace crease_law_test

@@ -17,7 +17,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace crease_static_test {
 
 Mat3 rot_y(double a) {
   return so3_exp<double>(Vec3(0, a, 0));
@@ -386,5 +386,5 @@ TEST(PoseProbe, QuaternionAndRotationVectorOfAGeneralRotation) {
   }
 }
 
-}  // namespace
+}  // namespace crease_static_test
 }  // namespace finseg

@@ -11,7 +11,7 @@
 #include "writers/run_outputs.hpp"
 
 namespace finseg {
-namespace {
+namespace deployment_peak_test {
 
 // Hump of 0.14 N at 26 mm, then the strip pulled taut: a rise to 0.256 N at 141.8 mm, the
 // shape of condition 1's gauge curve.
@@ -114,5 +114,5 @@ TEST(DeploymentPeak, SummaryReportsDeploymentPeakEndForceAndLargestApart) {
   EXPECT_TRUE(probe_summary(t)["deployed_at_m"].is_null());
 }
 
-}  // namespace
+}  // namespace deployment_peak_test
 }  // namespace finseg

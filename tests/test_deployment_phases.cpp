@@ -8,7 +8,7 @@
 #include "probes/deployment_phases.hpp"
 
 namespace finseg {
-namespace {
+namespace deployment_phases_test {
 
 TEST(DeploymentPhases, RuleOnSyntheticSamples) {
   std::vector<PhaseSample> s;
@@ -35,5 +35,5 @@ TEST(DeploymentPhases, BendOfACircularArcIsItsTurningAngle) {
   EXPECT_NEAR(panel_bend_angle(m, st, 0), 0.6, 1e-12);
 }
 
-}  // namespace
+}  // namespace deployment_phases_test
 }  // namespace finseg

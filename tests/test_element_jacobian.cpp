@@ -13,7 +13,7 @@
 #include "solvers/dofs.hpp"
 
 namespace finseg {
-namespace {
+namespace element_jacobian_test {
 
 // Largest entry of |closed form - autodiff| relative to the largest entry of the oracle.
 double relative_gap(const Eigen::SparseMatrix<double>& closed,
@@ -135,5 +135,5 @@ TEST(ElementJacobian, RotationalSpringDerivativeMatchesCentralDifferences) {
   }
 }
 
-}  // namespace
+}  // namespace element_jacobian_test
 }  // namespace finseg

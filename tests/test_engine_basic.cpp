@@ -8,7 +8,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace engine_basic_test {
 
 SheetSpec strip(int n) {
   SheetSpec s;
@@ -98,5 +98,5 @@ TEST(EngineBasic, ForcesAreMinusEnergyGradient) {
   }
 }
 
-}  // namespace
+}  // namespace engine_basic_test
 }  // namespace finseg

@@ -21,7 +21,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace example_miura_tube_test {
 
 std::string example(const std::string& file) {
   return std::string(FINSEG_SOURCE_DIR) + "/examples/tube/" + file;
@@ -126,5 +126,5 @@ TEST(ExampleMiuraTube, SceneRefusesBadSoftSeams) {
   }
 }
 
-}  // namespace
+}  // namespace example_miura_tube_test
 }  // namespace finseg

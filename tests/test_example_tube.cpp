@@ -14,7 +14,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace example_tube_test {
 
 std::string example(const std::string& file) {
   return std::string(FINSEG_SOURCE_DIR) + "/examples/tube/" + file;
@@ -163,5 +163,5 @@ TEST(ExampleTube, LayFlatInflationSceneReadsAndRunsAgainstAdiabaticFilling) {
   EXPECT_NEAR(g.temperature / (c.gamma * c.inflow.temperature[1]), 1, 1e-2);
 }
 
-}  // namespace
+}  // namespace example_tube_test
 }  // namespace finseg

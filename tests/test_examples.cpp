@@ -11,7 +11,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace examples_test {
 
 TEST(Examples, ZigzagScenesAreTheFourPaperConditions) {
   const char* files[] = {"condition1-80deg-plain.yaml", "condition2-80deg-taped.yaml",
@@ -25,5 +25,5 @@ TEST(Examples, ZigzagScenesAreTheFourPaperConditions) {
   }
 }
 
-}  // namespace
+}  // namespace examples_test
 }  // namespace finseg

@@ -17,7 +17,7 @@
 #include "fitting/fit_spec.hpp"
 
 namespace finseg {
-namespace {
+namespace fit_test {
 
 using test::csv_rows;
 using test::run_finseg;
@@ -185,5 +185,5 @@ TEST(Fit, BadFitFilesNameTheField) {
             "curves");
 }
 
-}  // namespace
+}  // namespace fit_test
 }  // namespace finseg

@@ -20,7 +20,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace flat_tube_test {
 
 FlatTubeSpec small_tube() {
   FlatTubeSpec s;
@@ -238,5 +238,5 @@ TEST(FlatTube, PressurisedFlatTubeRoundsOutConservingEnergy) {
   EXPECT_GT(st.chambers[0].volume, 1.5 * flat_tube_volume(s));
 }
 
-}  // namespace
+}  // namespace flat_tube_test
 }  // namespace finseg

@@ -10,7 +10,7 @@
 #include "patterns/zigzag_pattern.hpp"
 
 namespace finseg::test {
-namespace {
+namespace fold_patterns_test {
 
 using nlohmann::json;
 
@@ -232,5 +232,5 @@ TEST(FoldPatterns, LargeGridValidatesAndFindsOneAddedCrossing) {
   EXPECT_EQ((*hit)[1], added);
 }
 
-}  // namespace
+}  // namespace fold_patterns_test
 }  // namespace finseg::test

@@ -3,7 +3,7 @@
 #include "pattern_test_util.hpp"
 
 namespace finseg::test {
-namespace {
+namespace fold_refusals_test {
 
 using nlohmann::json;
 
@@ -263,5 +263,5 @@ TEST_F(FoldRefusal, CrossingEdges) {
   expect_refused(dir, crossing, "edges_vertices[3]", "crosses or overlaps edge 0");
 }
 
-}  // namespace
+}  // namespace fold_refusals_test
 }  // namespace finseg::test

@@ -7,7 +7,7 @@
 #include "patterns/zigzag_pattern.hpp"
 
 namespace finseg::test {
-namespace {
+namespace fold_zigzag_test {
 
 TEST(FoldZigzag, CountsAnglesAndFoldedGeometry) {
   ZigzagSpec z;  // paper strip: 6 panels of 80 mm x 40 mm, panels at 80 deg, PVPVP
@@ -66,5 +66,5 @@ TEST(FoldZigzag, CliWritesChecksAndRefuses) {
   EXPECT_NE(r.out.find("flat extent 0.02 x 0.01 m"), std::string::npos) << r.out;
 }
 
-}  // namespace
+}  // namespace fold_zigzag_test
 }  // namespace finseg::test

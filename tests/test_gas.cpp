@@ -15,7 +15,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_test {
 
 using test::add_box;
 using test::add_chamber_and_finish;
@@ -290,5 +290,5 @@ TEST(Gas, BadInputIsRefusedWithTheField) {
   }
 }
 
-}  // namespace
+}  // namespace gas_test
 }  // namespace finseg

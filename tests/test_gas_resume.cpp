@@ -16,7 +16,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_resume_test {
 
 Model inflating_box() {
   Model m;
@@ -137,5 +137,5 @@ TEST(GasResume, MissingOrImpossibleGasIsRefused) {
   refused(j, "model.chambers");
 }
 
-}  // namespace
+}  // namespace gas_resume_test
 }  // namespace finseg

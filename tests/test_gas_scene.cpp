@@ -10,7 +10,7 @@
 #include "scene/scene_writer.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_scene_test {
 
 // A flat sheet 0.2 m x 0.1 m in z = 0 (8 segments) under a fixed pyramid roof of four end
 // plates, apex 0.05 m above the sheet's centre: a closed chamber of volume L w h / 3.
@@ -169,5 +169,5 @@ TEST(GasScene, RefusesBadValuesWithFileFieldAndRange) {
       "chambers[0].faces[0].bodies[0]", "not a body");
 }
 
-}  // namespace
+}  // namespace gas_scene_test
 }  // namespace finseg

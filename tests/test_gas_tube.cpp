@@ -41,7 +41,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace gas_tube_test {
 
 constexpr double kR = 0.1, kT = 1e-3, kE = 1e9, kP = 1e3;  // m, m, Pa, Pa
 constexpr double kLength = 0.8;                            // 4 diameters, m
@@ -137,5 +137,5 @@ TEST(GasTube, PressurisedTubeSmall) {
   check_tube({8, 16});
 }
 
-}  // namespace
+}  // namespace gas_tube_test
 }  // namespace finseg

@@ -16,7 +16,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace generalized_alpha_test {
 
 // Fixed anchor (body 0) and one moving body (body 1) joined by one bushing.
 Model two_body_model(const BodyDef& moving, const ElementDef& joint, const Vec3& gravity,
@@ -334,5 +334,5 @@ TEST(GeneralizedAlphaScene, SchemeAndRhoInfKeys) {
   }
 }
 
-}  // namespace
+}  // namespace generalized_alpha_test
 }  // namespace finseg

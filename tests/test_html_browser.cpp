@@ -18,7 +18,7 @@
 namespace fs = std::filesystem;
 using namespace finseg;
 
-namespace {
+namespace html_browser_test {
 
 std::string find_chromium() {
   for (const char* name : {"chromium", "chromium-browser"}) {
@@ -66,8 +66,6 @@ std::string attr_of_status(const std::string& dom, const std::string& name) {
   return tag.empty() ? "<no status>" : writer_test::xml_attr(tag, name);
 }
 
-}  // namespace
-
 TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   const std::string chromium = find_chromium();
   ASSERT_FALSE(chromium.empty())
@@ -108,3 +106,5 @@ TEST(HtmlAnimationInBrowser, RendersAndPlaysInHeadlessChromium) {
   EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(reading[0]))) << reading;
   EXPECT_NE(reading.find(" s<"), std::string::npos) << reading;
 }
+
+}  // namespace html_browser_test

@@ -23,7 +23,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace identify_test {
 
 // Tip deflection of the generator's clamped strip under a small tip force, divided by the
 // continuum L^3/(3EI): must equal the closed form 1 - 1/(4N^2) of the discrete chain.
@@ -241,5 +241,5 @@ TEST(IdentifyCli, CreaseTableColumnsAreTheDocumentedOnesAndCurvesHaveTheirOwnCol
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
+}  // namespace identify_test
 }  // namespace finseg

@@ -24,7 +24,7 @@
 #include "solvers/step_limits.hpp"
 
 namespace finseg {
-namespace {
+namespace input_validation_test {
 
 // A small general sheet: a cantilever of 4 segments under a tip load.
 const char* kSheet = R"(material:
@@ -340,5 +340,5 @@ TEST(Numbering, EveryPanelCreaseAndBodyIndexValidated) {
                  "fixtures.bodies[0]", "not a body");
 }
 
-}  // namespace
+}  // namespace input_validation_test
 }  // namespace finseg

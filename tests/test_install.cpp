@@ -11,7 +11,7 @@
 #include "test_paths.hpp"
 
 namespace finseg {
-namespace {
+namespace install_test {
 
 namespace fs = std::filesystem;
 using test::slurp;
@@ -58,5 +58,5 @@ TEST(Install, PrefixHoldsProgramLibraryHeadersAndAPackageThatAConsumerFinds) {
   EXPECT_EQ(slurp(out), version());
 }
 
-}  // namespace
+}  // namespace install_test
 }  // namespace finseg

@@ -15,7 +15,7 @@
 #include "solvers/linear_solve.hpp"
 
 namespace finseg {
-namespace {
+namespace linear_solve_test {
 
 using SpMat = Eigen::SparseMatrix<double>;
 
@@ -310,5 +310,5 @@ TEST(LinearSolve, LargeSystemWithComparedOrderingsSolves) {
             std::sqrt(double(S.size())) * condition_number(n, -0.5) * kBackwardError);
 }
 
-}  // namespace
+}  // namespace linear_solve_test
 }  // namespace finseg

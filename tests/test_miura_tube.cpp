@@ -22,7 +22,7 @@
 #include "patterns/pattern_checks.hpp"
 
 namespace finseg {
-namespace {
+namespace miura_tube_test {
 
 MiuraTubeSpec tube(double theta_deg, int columns = 5) {
   MiuraTubeSpec s;
@@ -247,5 +247,5 @@ TEST(MiuraTube, RefusesSpecsOutOfRange) {
   EXPECT_THROW(miura_tube_column_faces(s, s.columns), InputError);
 }
 
-}  // namespace
+}  // namespace miura_tube_test
 }  // namespace finseg

@@ -22,7 +22,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace miura_tube_kinematics_test {
 
 // Where pattern vertex v is: the body whose outline has a corner there, and that corner.
 struct Corner {
@@ -144,5 +144,5 @@ TEST(MiuraTubeKinematics, PulledOpenTubeFollowsTheClosedFormOverTheFoldRange) {
   RecordProperty("worst_error_over_side", std::to_string(worst));
 }
 
-}  // namespace
+}  // namespace miura_tube_kinematics_test
 }  // namespace finseg

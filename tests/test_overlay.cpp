@@ -9,7 +9,7 @@
 #include "cli_test_util.hpp"
 
 namespace finseg::test {
-namespace {
+namespace overlay_test {
 
 // A small zigzag pulled quasi-statically (finishes) and explicitly with a far too large
 // step (diverges after a few outputs).
@@ -58,5 +58,5 @@ TEST(Overlay, DrawsEveryRunAndNamesTheOneThatDidNotFinish) {
   EXPECT_NE(probe.err.find("no drive probe 'tip'"), std::string::npos) << probe.err;
 }
 
-}  // namespace
+}  // namespace overlay_test
 }  // namespace finseg::test

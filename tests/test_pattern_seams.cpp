@@ -18,7 +18,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace pattern_seams_test {
 
 // Crease laws at rest in the rolled tube (the element's angle is FOLD's with the opposite
 // sign: +360 / facets degrees).
@@ -209,5 +209,5 @@ TEST(PatternSeams, BadSeamsAreRefused) {
   }
 }
 
-}  // namespace
+}  // namespace pattern_seams_test
 }  // namespace finseg

@@ -17,7 +17,7 @@
 #include "solvers/dofs.hpp"
 
 namespace finseg {
-namespace {
+namespace plate_cell_jacobian_test {
 
 Model miura_sheet(bool with_plate_cells) {
   MiuraSpec ms;
@@ -85,5 +85,5 @@ TEST(PlateCells, CouplesAreTheEnergysGradient) {
   EXPECT_NEAR(dE, -work, 1e-7 * std::abs(work));
 }
 
-}  // namespace
+}  // namespace plate_cell_jacobian_test
 }  // namespace finseg

@@ -16,7 +16,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace pressure_test {
 
 using test::add_plate;
 
@@ -238,5 +238,5 @@ TEST(PressureModel, ValidateRefusesBadDefinitions) {
   EXPECT_NO_THROW(validate(m));
 }
 
-}  // namespace
+}  // namespace pressure_test
 }  // namespace finseg

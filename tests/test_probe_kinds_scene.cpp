@@ -8,7 +8,7 @@
 #include "scene/scene_reader.hpp"
 
 namespace finseg {
-namespace {
+namespace probe_kinds_scene_test {
 
 std::string scene_with(const std::string& probe) {
   return R"(
@@ -68,5 +68,5 @@ TEST(ProbeKindsScene, BadReferencesAreRefusedWithTheirField) {
       std::string::npos);
 }
 
-}  // namespace
+}  // namespace probe_kinds_scene_test
 }  // namespace finseg

@@ -15,7 +15,7 @@
 #include "writers/provenance.hpp"
 
 namespace finseg {
-namespace {
+namespace provenance_test {
 
 using test::run_finseg;
 using test::slurp;
@@ -116,5 +116,5 @@ TEST(Provenance, ResumeRefusesACheckpointWhoseCreaseTableChanged) {
   EXPECT_NE(r.err.find("crease data changed"), std::string::npos) << r.err;
 }
 
-}  // namespace
+}  // namespace provenance_test
 }  // namespace finseg

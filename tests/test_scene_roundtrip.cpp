@@ -8,7 +8,7 @@
 #include "scene/scene_reader.hpp"
 
 namespace finseg {
-namespace {
+namespace scene_roundtrip_test {
 
 using test::expect_same_model;
 using test::run_finseg;
@@ -136,5 +136,5 @@ outputs: {vtk: false, html: false, plot: false, phases: false}
   EXPECT_FALSE(s.outputs.phases.enabled);
 }
 
-}  // namespace
+}  // namespace scene_roundtrip_test
 }  // namespace finseg

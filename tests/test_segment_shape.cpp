@@ -16,7 +16,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace segment_shape_test {
 
 Outline regular_polygon(int n, double circumradius, double phase = 0) {
   Outline v;
@@ -204,5 +204,5 @@ TEST(SegmentShape, TriangleAndPentagonRestOnAPlateWhereContactCarriesTheirWeight
   }
 }
 
-}  // namespace
+}  // namespace segment_shape_test
 }  // namespace finseg

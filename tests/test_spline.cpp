@@ -11,7 +11,7 @@ using finseg::CubicSpline;
 using finseg::SplineEnds;
 using finseg::SplineExtrapolation;
 
-namespace {
+namespace spline_test {
 
 // p(x) = 2 - 3x + 0.5x^2 + 0.7x^3 and its derivatives / antiderivative.
 double p(double x) {
@@ -34,8 +34,6 @@ std::vector<double> values_of(double (*f)(double), const std::vector<double>& x)
   for (double xi : x) y.push_back(f(xi));
   return y;
 }
-
-}  // namespace
 
 TEST(Spline, NotAKnotReproducesCubicExactly) {
   const CubicSpline s(kKnots, values_of(p, kKnots), SplineEnds::NotAKnot,
@@ -147,3 +145,5 @@ TEST(Spline, RejectsBadKnots) {
                std::invalid_argument);
   EXPECT_THROW(CubicSpline({0.0, NAN}, {1.0, 2.0}, SplineEnds::Natural), std::invalid_argument);
 }
+
+}  // namespace spline_test

@@ -14,7 +14,7 @@
 #include "writers/output_folder.hpp"
 
 namespace finseg {
-namespace {
+namespace state_file_test {
 
 // The validation tests' cantilever with 4 segments and a tip load.
 Model strip() {
@@ -177,5 +177,5 @@ TEST(OutputFolder, Utf8CheckFollowsTheStandard) {
   }
 }
 
-}  // namespace
+}  // namespace state_file_test
 }  // namespace finseg

@@ -12,7 +12,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace static_sheet_test {
 
 Model paper_sheet(int n) {
   SheetSpec spec;
@@ -65,5 +65,5 @@ TEST(StaticSheet, SelfWeightThroughIndefiniteIteratesToAStableEquilibrium) {
   EXPECT_LT(z_min, -0.5 * 0.2);  // a large deflection (q L^3 / (E I) = 18.8)
 }
 
-}  // namespace
+}  // namespace static_sheet_test
 }  // namespace finseg

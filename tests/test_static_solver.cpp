@@ -16,7 +16,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace static_solver_test {
 
 using validation::probe_position;
 using validation::slender_strip;
@@ -241,5 +241,5 @@ TEST(StaticSolver, SymmetricNewtonMatrixConvergesAsTheExactOneOffEquilibrium) {
   EXPECT_LT(dp, 1e-9 * sag);
 }
 
-}  // namespace
+}  // namespace static_solver_test
 }  // namespace finseg

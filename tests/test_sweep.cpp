@@ -12,7 +12,7 @@
 #include "sweep/sweep_table.hpp"
 
 namespace finseg {
-namespace {
+namespace sweep_test {
 
 using test::run_finseg;
 using test::slurp;
@@ -179,5 +179,5 @@ TEST(Sweep, PlotHasALinePerCombinationOfTheOtherParameters) {
   EXPECT_FALSE(sweep_plot_spec(spec, cases, results).has_value());
 }
 
-}  // namespace
+}  // namespace sweep_test
 }  // namespace finseg

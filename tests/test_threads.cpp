@@ -10,7 +10,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace threads_test {
 
 // A damped plate large enough for the parallel loop (over 512 elements).
 Model plate() {
@@ -93,5 +93,5 @@ TEST(Threads, StaticSolveEndsInTheSameStateOnOneAndTwoThreads) {
   EXPECT_EQ(ends[0].R_WB, ends[1].R_WB);
 }
 
-}  // namespace
+}  // namespace threads_test
 }  // namespace finseg

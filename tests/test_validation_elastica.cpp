@@ -10,7 +10,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_elastica_test {
 
 using reference::elastica_tip_load;
 using validation::slender_strip;
@@ -83,5 +83,5 @@ TEST(ElasticaCantilever, ConvergesAtSecondOrder) {
   }
 }
 
-}  // namespace
+}  // namespace validation_elastica_test
 }  // namespace finseg

@@ -8,7 +8,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_end_moment_test {
 
 using std::numbers::pi;
 
@@ -44,5 +44,5 @@ TEST(EndMoment, QuarterArcMatchesClosedForm) {
   EXPECT_NEAR(d.y(), 0.0, 1e-9 * s.length);
 }
 
-}  // namespace
+}  // namespace validation_end_moment_test
 }  // namespace finseg

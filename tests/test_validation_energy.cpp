@@ -13,7 +13,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_energy_test {
 
 // L / t = 100 keeps the explicit step (set by the stretching springs) affordable.
 CantileverSpec strip(int segments = 16) {
@@ -102,5 +102,5 @@ TEST(EnergyConservation, GeneralizedAlphaBoundedWithoutDrift) {
   EXPECT_LT(std::abs(drift), 2e-4);
 }
 
-}  // namespace
+}  // namespace validation_energy_test
 }  // namespace finseg

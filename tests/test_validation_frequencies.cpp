@@ -9,7 +9,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_frequencies_test {
 
 TEST(CantileverEigenvalues, RootsMatchClassicalValues) {
   EXPECT_NEAR(reference::cantilever_beta_l(1), 1.87510, 5e-6);
@@ -31,5 +31,5 @@ TEST(CantileverFrequencies, FirstTwoWithinOnePercentAt64Segments) {
   }
 }
 
-}  // namespace
+}  // namespace validation_frequencies_test
 }  // namespace finseg

@@ -19,7 +19,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_membrane_test {
 
 constexpr double kE = 1e9, kNu = 0.3, kT = 1e-3;
 
@@ -187,5 +187,5 @@ TEST(MembraneCells, EveryCorrectionIsPositiveSemiDefinite) {
   }
 }
 
-}  // namespace
+}  // namespace validation_membrane_test
 }  // namespace finseg

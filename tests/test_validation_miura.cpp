@@ -23,7 +23,7 @@
 #include "solvers/solver.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_miura_test {
 
 MiuraSpec miura(int rows, int columns, double theta) {
   MiuraSpec s;
@@ -170,5 +170,5 @@ TEST(MiuraValidation, OuterDimensionsFollowTheClosedFormOverTheFoldRange) {
   RecordProperty("worst_error_over_side", std::to_string(worst));
 }
 
-}  // namespace
+}  // namespace validation_miura_test
 }  // namespace finseg

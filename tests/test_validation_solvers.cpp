@@ -9,7 +9,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_solvers_test {
 
 // A stocky strip (L / t = 10) on 4 segments: its highest frequency is only ~85 times its
 // first, so the explicit solver settles in ~1e5 steps. All three solvers share the model.
@@ -59,5 +59,5 @@ TEST(SolverAgreement, DynamicSolversSettleOnStaticCantilever) {
   EXPECT_LT((tip_implicit - tip_static).norm(), 1e-6 * s.length);
 }
 
-}  // namespace
+}  // namespace validation_solvers_test
 }  // namespace finseg

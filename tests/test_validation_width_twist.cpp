@@ -8,7 +8,7 @@
 #include "validation_cantilever.hpp"
 
 namespace finseg {
-namespace {
+namespace validation_width_twist_test {
 
 constexpr double kShearCorrection = 5.0 / 6.0;  // rectangular section
 
@@ -83,5 +83,5 @@ TEST(SmallLoadBeamTheory, AxialTipLoadStretchesByFLOverEA) {
   EXPECT_NEAR(d / (F * s.length / EA), 1.0, 1e-4);
 }
 
-}  // namespace
+}  // namespace validation_width_twist_test
 }  // namespace finseg

@@ -21,7 +21,7 @@
 #include "writers/vtk_appended.hpp"
 
 namespace finseg {
-namespace {
+namespace vtk_fields_test {
 
 namespace fs = std::filesystem;
 
@@ -220,5 +220,5 @@ TEST(VtkFields, ModeShapeOfABoxOnASoftSpring) {
   EXPECT_NE(pvd.find("timestep=\"2\" part=\"0\" file=\"modes_00002.vtu\""), std::string::npos);
 }
 
-}  // namespace
+}  // namespace vtk_fields_test
 }  // namespace finseg

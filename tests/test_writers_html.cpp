@@ -18,7 +18,7 @@
 namespace fs = std::filesystem;
 using namespace finseg;
 
-namespace {
+namespace writers_html_test {
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -34,8 +34,6 @@ nlohmann::json embedded_data(const std::string& page) {
   const std::size_t b = page.find("</script>", a);
   return nlohmann::json::parse(page.substr(a + open.size(), b - a - open.size()));
 }
-
-}  // namespace
 
 TEST(HtmlAnimation, SelfContainedPageWithEmbeddedFrames) {
   auto s = writer_test::make_zigzag_scene(20);
@@ -141,3 +139,5 @@ TEST(HtmlAnimation, UnfinishedRunShowsABannerAndPeaksAreMarked) {
   EXPECT_THROW(write_html_animation(path.string(), "t", s.model, s.frames, s.curve, {}, notes),
                InputError);
 }
+
+}  // namespace writers_html_test

@@ -9,7 +9,7 @@
 #include "probes/pull_test.hpp"
 
 namespace finseg {
-namespace {
+namespace zigzag_conditions_test {
 
 TEST(ZigzagConditions, LaminateRigidityMatchesHandFormulas) {
   const double w = 0.04, E = 4e9, t = 1e-4;
@@ -149,5 +149,5 @@ TEST(ZigzagConditions, PeakForceConvergesUnderRefinementWithoutContact) {
   EXPECT_LT(std::abs(coarse - fine) / fine, 0.02) << coarse << " vs " << fine << " N";
 }
 
-}  // namespace
+}  // namespace zigzag_conditions_test
 }  // namespace finseg

@@ -20,7 +20,7 @@
 #include "zigzag_linkage.hpp"
 
 namespace finseg {
-namespace {
+namespace zigzag_fold_path_test {
 
 double total_mass(const Model& m, bool fixed_only) {
   double sum = 0;
@@ -250,5 +250,5 @@ TEST(ZigzagFoldPath, DeploysWithContact) {
   EXPECT_LT(r.deployment_peak.x, 0.25 * m.drives[0].deployed_at);
 }
 
-}  // namespace
+}  // namespace zigzag_fold_path_test
 }  // namespace finseg

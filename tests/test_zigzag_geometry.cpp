@@ -7,7 +7,7 @@
 #include "generators/zigzag.hpp"
 
 namespace finseg {
-namespace {
+namespace zigzag_geometry_test {
 
 TEST(ZigzagGeometry, PanelsCreasesAndAnglesAreExact) {
   ZigzagSpec spec;  // the paper's strip: 480 x 40 mm, 6 panels, 80 deg
@@ -68,5 +68,5 @@ TEST(ZigzagGeometry, RejectsImpossibleInput) {
   EXPECT_THROW(build_zigzag_model(s), InputError);
 }
 
-}  // namespace
+}  // namespace zigzag_geometry_test
 }  // namespace finseg

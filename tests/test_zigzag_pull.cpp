@@ -9,7 +9,7 @@
 #include "zigzag_linkage.hpp"
 
 namespace finseg {
-namespace {
+namespace zigzag_pull_test {
 
 Vec3 total_weight(const Model& m) {
   Vec3 w = Vec3::Zero();
@@ -47,5 +47,5 @@ TEST(ZigzagPull, RigidPanelLimitMatchesClosedForm) {
   test::expect_rigid_panel_linkage(build_zigzag_model);
 }
 
-}  // namespace
+}  // namespace zigzag_pull_test
 }  // namespace finseg
