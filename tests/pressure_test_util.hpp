@@ -91,4 +91,14 @@ inline void add_chamber_and_finish(Model& m, const ChamberDef& c, double length)
   prepare_chambers(m);
 }
 
+/// A chamber of prescribed pressure (zero until set) bounded by every body of `m`, each
+/// with its +z side outward: a closed pattern surface such as a sealed tube.
+inline ChamberDef whole_model_chamber(const Model& m, const std::string& name) {
+  ChamberDef c;
+  c.name = name;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) c.faces.push_back({static_cast<int>(b), true});
+  c.gas = GasModel::Prescribed;
+  return c;
+}
+
 }  // namespace finseg::test

@@ -16,6 +16,7 @@
 #include "generators/pattern_sheet.hpp"
 #include "patterns/flat_tube_pattern.hpp"
 #include "patterns/pattern_checks.hpp"
+#include "pressure_test_util.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/solver.hpp"
 
@@ -100,14 +101,6 @@ Model tube_model(const CreasePattern& p, int subdivisions, double crease_stiffne
   return build_pattern_model(p, spec, "<flat tube>");
 }
 
-ChamberDef whole_chamber(const Model& m) {
-  ChamberDef c;
-  c.name = "tube";
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) c.faces.push_back({static_cast<int>(b), true});
-  c.gas = GasModel::Prescribed;
-  return c;
-}
-
 // The sealed tube is a closed chamber without end plates, its volume the flattened prism's
 // with two wedge seals (flat_tube_volume) to round-off, at any subdivision; with one face
 // left out the chamber check refuses it.
@@ -116,12 +109,12 @@ TEST(FlatTube, SealedTubeIsAClosedChamberOfTheFlattenedVolume) {
   const CreasePattern p = flat_tube_crease_pattern(s);
   for (int n : {1, 2, 3}) {
     Model m = tube_model(p, n, 0.01);
-    m.chambers.push_back(whole_chamber(m));
+    m.chambers.push_back(test::whole_model_chamber(m, "tube"));
     prepare_chambers(m);
     EXPECT_NEAR(m.chambers[0].initial_volume / flat_tube_volume(s), 1, 1e-12) << n;
   }
   Model m = tube_model(p, 1, 0.01);
-  ChamberDef open = whole_chamber(m);
+  ChamberDef open = test::whole_model_chamber(m, "tube");
   open.faces.erase(open.faces.begin() + 7);
   m.chambers.push_back(open);
   EXPECT_THROW(prepare_chambers(m), InputError);
@@ -199,7 +192,7 @@ TEST(FlatTube, PressurisedFlatTubeRoundsOutConservingEnergy) {
   s.length = 0.1;
   const CreasePattern p = flat_tube_crease_pattern(s);
   Model m = tube_model(p, 1, 0.002, flat_tube_row_faces(s, 0));
-  ChamberDef c = whole_chamber(m);
+  ChamberDef c = test::whole_model_chamber(m, "tube");
   const double pressure = 1e3;
   c.prescribed.pressure = pressure;
   m.chambers.push_back(c);

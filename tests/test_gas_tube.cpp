@@ -38,6 +38,7 @@
 #include "generators/pattern_sheet.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/tube_pattern.hpp"
+#include "pressure_test_util.hpp"
 #include "solvers/solver.hpp"
 
 namespace finseg {
@@ -69,10 +70,7 @@ TubeResult pressurised_tube(int n) {
   for (int j = 0; j < n; ++j)
     spec.fixed_faces.push_back(j), spec.fixed_faces.push_back((kRows - 1) * n + j);
   Model m = build_pattern_model(p, spec, "<tube>");
-  ChamberDef c;
-  c.name = "tube";
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) c.faces.push_back({static_cast<int>(b), true});
-  c.gas = GasModel::Prescribed;
+  ChamberDef c = test::whole_model_chamber(m, "tube");
   c.prescribed.pressure = kP;
   std::vector<Vec3> start, end;  // y = 0 seen from -y: corners clockwise in theta
   for (int j = 0; j < n; ++j) {

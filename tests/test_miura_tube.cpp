@@ -20,6 +20,7 @@
 #include "generators/pattern_sheet.hpp"
 #include "patterns/miura_tube_pattern.hpp"
 #include "patterns/pattern_checks.hpp"
+#include "pressure_test_util.hpp"
 
 namespace finseg {
 namespace miura_tube_test {
@@ -137,14 +138,6 @@ Model tube_model(const CreasePattern& p, int subdivisions) {
   return build_pattern_model(p, spec, "<miura tube>");
 }
 
-ChamberDef whole_chamber(const Model& m) {
-  ChamberDef c;
-  c.name = "tube";
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) c.faces.push_back({static_cast<int>(b), true});
-  c.gas = GasModel::Prescribed;
-  return c;
-}
-
 // The capped tube is one closed chamber of the closed-form volume to round-off, stowed and
 // part deployed, at any subdivision; without a cap (or with one face left out) it is open and
 // refused.
@@ -154,7 +147,7 @@ TEST(MiuraTube, CappedTubeIsAClosedChamberOfTheClosedFormVolume) {
     const CreasePattern p = miura_tube_crease_pattern(s);
     for (int n : {1, 2}) {
       Model m = tube_model(p, n);
-      m.chambers.push_back(whole_chamber(m));
+      m.chambers.push_back(test::whole_model_chamber(m, "tube"));
       prepare_chambers(m);
       EXPECT_NEAR(m.chambers[0].initial_volume / miura_tube_volume(s, s.fold_angle), 1, 1e-12)
           << deg << " deg, subdivisions " << n;
@@ -163,7 +156,7 @@ TEST(MiuraTube, CappedTubeIsAClosedChamberOfTheClosedFormVolume) {
   MiuraTubeSpec open = tube(80);
   open.caps = false;
   Model m = tube_model(miura_tube_crease_pattern(open), 1);
-  m.chambers.push_back(whole_chamber(m));
+  m.chambers.push_back(test::whole_model_chamber(m, "tube"));
   EXPECT_THROW(prepare_chambers(m), InputError);
 }
 
