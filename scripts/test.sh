@@ -9,10 +9,12 @@ jobs=$(nproc)
 echo "== clang-format check"
 git ls-files '*.cpp' '*.hpp' | xargs clang-format --dry-run --Werror
 
-# Both builds are unity builds: a dozen sources to a translation unit parse the shared headers
-# (Eigen, gtest, the library's) and instantiate their templates once, which takes most of a
-# file's compile time: the test files build in 2.8 times less CPU time. So file-local names
-# must differ between the files of a folder (CMake leaves out files with their own definitions).
+# Both builds are unity builds (the library excepted, CMakeLists.txt): a dozen test files to a
+# translation unit parse the shared headers (Eigen, gtest, the library's) and instantiate their
+# templates once, which takes most of a test file's compile time: the tests build in about a
+# quarter of the CPU time. So file-local names must differ between the files of a folder (each
+# test file's helpers live in a namespace named after it; CMake leaves out files with their
+# own definitions).
 unity="-DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=12"
 
 echo "== release build and tests"
