@@ -83,4 +83,17 @@ inline CliResult run_finseg(const TempDir& dir, const std::string& args,
   return r;
 }
 
+/// Expects `finseg ARGS` run in `dir` to refuse with exit code 2 and a message containing
+/// `named` (the option or field the refusal must name).
+inline void expect_refused(const TempDir& dir, const std::string& args, const std::string& named) {
+  const CliResult r = run_finseg(dir, args);
+  EXPECT_EQ(r.code, 2) << args;
+  EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
+}
+
+/// The first word of `args` ("--radius 0" -> "--radius").
+inline std::string first_word(const std::string& args) {
+  return args.substr(0, args.find(' '));
+}
+
 }  // namespace finseg::test

@@ -108,9 +108,7 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
                           "--top open --base open "
                           "--gathered -0.1",
                           "--top open --base open --gathered 0.5 --stowed 150"}) {
-    r = run_finseg(dir, std::string("gen cone ") + bad + " --out l.yaml");
-    EXPECT_EQ(r.code, 2) << bad;
-    EXPECT_NE(r.err.find("--gathered"), std::string::npos) << r.err;
+    expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--gathered");
   }
   // Cut to a target segment size graded towards the folds: the scene says so and reads back
   // with more segments than one per face.
@@ -128,30 +126,17 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   for (const auto& [bad, field] : {std::pair{"--segment-size -0.01", "--segment-size"},
                                    {"--subdivisions 2 --segment-size 0.01", "--segment-size"},
                                    {"--crease-refinement 0.5", "--crease-refinement"}}) {
-    r = run_finseg(dir, std::string("gen cone --top open --base open ") + bad + " --out l.yaml");
-    EXPECT_EQ(r.code, 2) << bad;
-    EXPECT_NE(r.err.find(field), std::string::npos) << r.err;
+    expect_refused(dir, std::string("gen cone --top open --base open ") + bad + " --out l.yaml",
+                   field);
   }
-  r = run_finseg(dir, "gen cone --top open --base open --inflate --out l.yaml");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--inflate"), std::string::npos) << r.err;
+  expect_refused(dir, "gen cone --top open --base open --inflate --out l.yaml", "--inflate");
   for (const char* bad : {"--stowed 150", "--top open --base open --stowed 181"}) {
-    r = run_finseg(dir, std::string("gen cone ") + bad + " --out l.yaml");
-    EXPECT_EQ(r.code, 2) << bad;
-    EXPECT_NE(r.err.find("--stowed"), std::string::npos) << r.err;
+    expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--stowed");
   }
-  r = run_finseg(dir, "gen cone --top lid --out l.yaml");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--top"), std::string::npos) << r.err;
-  r = run_finseg(dir, "gen cone --fold-steps -1 --out l.yaml");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--fold-steps"), std::string::npos) << r.err;
-  r = run_finseg(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--top-radius"), std::string::npos) << r.err;
-  r = run_finseg(dir, "gen miura --sector-angle 95 --out e.yaml");
-  EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--sector-angle"), std::string::npos) << r.err;
+  expect_refused(dir, "gen cone --top lid --out l.yaml", "--top");
+  expect_refused(dir, "gen cone --fold-steps -1 --out l.yaml", "--fold-steps");
+  expect_refused(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml", "--top-radius");
+  expect_refused(dir, "gen miura --sector-angle 95 --out e.yaml", "--sector-angle");
 }
 
 }  // namespace cli_gen_patterns_test

@@ -61,10 +61,8 @@ TEST(ExampleMiuraTube, CliWritesTheTubeAndRefusesBadOptions) {
   }
   for (const char* bad : {"--columns 0", "--side-a 0", "--side-b nan", "--sector-angle 90",
                           "--fold-angle 0", "--fold-angle 90"}) {
-    r = test::run_finseg(dir, std::string("pattern miura-tube ") + bad);
-    EXPECT_EQ(r.code, 2) << bad;
-    const std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
-    EXPECT_NE(r.err.find("<cli>: " + option), std::string::npos) << r.err;
+    test::expect_refused(dir, std::string("pattern miura-tube ") + bad,
+                         "<cli>: " + test::first_word(bad));
   }
 }
 

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_test_util.hpp"
 #include "patterns/flat_tube_pattern.hpp"
@@ -65,10 +68,8 @@ TEST(ExampleTube, CliWritesTheZFoldedTubeAndRefusesBadOptions) {
       << r.out;
   for (const char* bad : {"--facets 2", "--rows 1 --fold-angle 30", "--fold-angle 181",
                           "--radius 0", "--length nan"}) {
-    r = test::run_finseg(dir, std::string("pattern tube ") + bad);
-    EXPECT_EQ(r.code, 2) << bad;
-    const std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
-    EXPECT_NE(r.err.find("<cli>: " + option), std::string::npos) << r.err;
+    test::expect_refused(dir, std::string("pattern tube ") + bad,
+                         "<cli>: " + test::first_word(bad));
   }
 }
 
@@ -116,21 +117,18 @@ TEST(ExampleTube, CliWritesTheLayFlatTubeAndRefusesBadOptions) {
   // N = 2 x 3 + 2 = 8 columns: vertices 5 x 9 + 4 seal middles = 49; faces 2 x 8 straight +
   // 2 x (6 + 6) seal = 40.
   EXPECT_NE(r.out.find("49 vertices, 40 faces"), std::string::npos) << r.out;
-  for (const char* bad :
-       {"--flat 1e-3 --facets 1", "--flat 1e-3 --rows 2", "--flat 0.02 --width 0.04 --facets 4",
-        "--flat -1", "--flat 1e-3 --seal-length 0.3 --length 0.4", "--flat 1e-3 --width 0",
-        "--flat 1e-3 --radius 0.1", "--flat 1e-3 --fold-angle 30", "--width 0.1"}) {
-    r = test::run_finseg(dir, std::string("pattern tube ") + bad);
-    EXPECT_EQ(r.code, 2) << bad;
-    std::string option = std::string(bad);
-    // The option named is the last one given (the one out of range), --flat for the gap.
-    option = option.substr(option.rfind("--"));
-    option = option.substr(0, option.find(' '));
-    if (std::string(bad).find("--flat 0.02") == 0 || std::string(bad) == "--flat -1") {
-      option = "--flat";
-    }
-    if (std::string(bad).find("--seal-length") != std::string::npos) option = "--seal-length";
-    EXPECT_NE(r.err.find("<cli>: " + option), std::string::npos) << bad << ": " << r.err;
+  // Each refusal names the option out of range (--flat for the gap itself).
+  for (const auto& [bad, option] : std::vector<std::pair<std::string, std::string>>{
+           {"--flat 1e-3 --facets 1", "--facets"},
+           {"--flat 1e-3 --rows 2", "--rows"},
+           {"--flat 0.02 --width 0.04 --facets 4", "--flat"},
+           {"--flat -1", "--flat"},
+           {"--flat 1e-3 --seal-length 0.3 --length 0.4", "--seal-length"},
+           {"--flat 1e-3 --width 0", "--width"},
+           {"--flat 1e-3 --radius 0.1", "--radius"},
+           {"--flat 1e-3 --fold-angle 30", "--fold-angle"},
+           {"--width 0.1", "--width"}}) {
+    test::expect_refused(dir, "pattern tube " + bad, "<cli>: " + option);
   }
 }
 
