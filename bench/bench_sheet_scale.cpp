@@ -44,20 +44,6 @@ double peak_rss_gb() {
   return u.ru_maxrss / 1048576.0;  // kB on Linux
 }
 
-Model paper_sheet(int n) {
-  SheetSpec spec;
-  spec.length = spec.width = 0.2;
-  spec.thickness = 1e-4;
-  spec.youngs_modulus = 3e9;
-  spec.poisson_ratio = 0.3;
-  spec.density = 800;
-  spec.cells_along = spec.cells_across = n;
-  spec.clamp_start = true;
-  Model m = build_sheet_model(spec);
-  m.gravity_W = Vec3(0, 0, -9.81);
-  return m;
-}
-
 // Seconds of one force evaluation with (jacobian = true) or without its Jacobian at `state`.
 double evaluation_seconds(const Model& m, const State& state, bool jacobian) {
   BodyForces f;
@@ -68,7 +54,7 @@ double evaluation_seconds(const Model& m, const State& state, bool jacobian) {
 }
 
 void run_case(const std::string& kind, int n, double dt) {
-  const Model m = paper_sheet(n);
+  const Model m = clamped_paper_sheet(n);
   State state = initial_state(m);
   SolverSettings set;
   if (kind == "static") {

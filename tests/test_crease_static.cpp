@@ -13,6 +13,7 @@
 #include "elements/bushing.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/measured.hpp"
+#include "elements/drive_gauge.hpp"
 #include "probes/recorder.hpp"
 #include "solvers/solver.hpp"
 

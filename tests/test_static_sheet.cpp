@@ -14,20 +14,6 @@
 namespace finseg {
 namespace static_sheet_test {
 
-Model paper_sheet(int n) {
-  SheetSpec spec;
-  spec.length = spec.width = 0.2;
-  spec.thickness = 1e-4;
-  spec.youngs_modulus = 3e9;
-  spec.poisson_ratio = 0.3;
-  spec.density = 800;
-  spec.cells_along = spec.cells_across = n;
-  spec.clamp_start = true;
-  Model m = build_sheet_model(spec);
-  m.gravity_W = Vec3(0, 0, -9.81);
-  return m;
-}
-
 SolverStats solve(const Model& m, State& s, int load_steps) {
   SolverSettings set;
   set.kind = SolverKind::Static;
@@ -36,7 +22,7 @@ SolverStats solve(const Model& m, State& s, int load_steps) {
 }
 
 TEST(StaticSheet, SelfWeightThroughIndefiniteIteratesToAStableEquilibrium) {
-  const Model m = paper_sheet(16);
+  const Model m = clamped_paper_sheet(16);
   State s = initial_state(m);
   linear_solve_counters() = {};
   const SolverStats st = solve(m, s, 1);

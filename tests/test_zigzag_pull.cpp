@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "elements/assemble.hpp"
+#include "elements/drive_gauge.hpp"
 #include "generators/zigzag.hpp"
 #include "solvers/solver.hpp"
 #include "zigzag_linkage.hpp"

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "elements/crease_law.hpp"
+#include "elements/drive_gauge.hpp"
 #include "generators/zigzag.hpp"
 #include "solvers/solver.hpp"
 

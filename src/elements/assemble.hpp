@@ -52,9 +52,6 @@ bool has_velocity_forces(const Model& model);
 /// Generalized force vector (num_dofs) of the free bodies, from per-body resultants.
 Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces);
 
-/// Gauge force of drive d: force the gauge spring applies to the structure, world frame, N.
-Vec3 drive_force(const Model& model, const State& state, int d);
-
 /// Updates history variables (crease angle and opening count, contact anchors) after an
 /// accepted step or a converged equilibrium.
 void commit_history(const Model& model, State& state);

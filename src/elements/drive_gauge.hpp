@@ -14,4 +14,7 @@ class Assembler;
 /// automatic differentiation of the same kernel when ForceJacobian::autodiff (the oracle).
 void add_drive_gauges(const Model& model, const State& state, Assembler& as);
 
+/// Gauge force of drive d: force the gauge spring applies to the structure, world frame, N.
+Vec3 drive_force(const Model& model, const State& state, int d);
+
 }  // namespace finseg

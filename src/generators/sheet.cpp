@@ -247,4 +247,18 @@ MaterialPoint locate_material_point(const Model& model, double s, double y) {
                   o.x(), o.x() + model.sheet.length, o.y(), o.y() + model.sheet.width));
 }
 
+Model clamped_paper_sheet(int n) {
+  SheetSpec spec;
+  spec.length = spec.width = 0.2;
+  spec.thickness = 1e-4;
+  spec.youngs_modulus = 3e9;
+  spec.poisson_ratio = 0.3;
+  spec.density = 800;
+  spec.cells_along = spec.cells_across = n;
+  spec.clamp_start = true;
+  Model m = build_sheet_model(spec);
+  m.gravity_W = Vec3(0, 0, -9.81);
+  return m;
+}
+
 }  // namespace finseg

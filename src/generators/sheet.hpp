@@ -62,6 +62,11 @@ std::vector<double> panel_cell_bounds(const SheetSpec& spec, double a, double b,
 /// Builds bodies, elements and initial poses. Throws InputError on impossible specs.
 Model build_sheet_model(const SheetSpec& spec);
 
+/// A square 0.2 m sheet of 80 g/m^2 paper (0.1 mm, 3 GPa, nu 0.3, 800 kg/m^3) cut into
+/// n x n cells, clamped along its start edge and sagging under gravity: the sparse solvers'
+/// scale case (tests/test_static_sheet.cpp, bench/bench_sheet_scale.cpp).
+Model clamped_paper_sheet(int n);
+
 /// Body containing material point (s, y) and that point's coordinates in the body frame.
 struct MaterialPoint {
   int body = -1;

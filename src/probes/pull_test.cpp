@@ -5,6 +5,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "core/error.hpp"
+#include "elements/drive_gauge.hpp"
 
 namespace finseg {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "core/so3.hpp"
+#include "elements/drive_gauge.hpp"
 #include "elements/element_load.hpp"
 #include "probes/segment_fields.hpp"
 #include "solvers/dofs.hpp"
