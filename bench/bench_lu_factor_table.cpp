@@ -83,10 +83,13 @@ Row sparselu_row(const SpMat& A, const Eigen::VectorXd& b, int repeat) {
 }
 
 // UMFPACK with `strategy` (UMFPACK_STRATEGY_AUTO: its default, which looks at the pattern).
-Row umfpack_row(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strategy) {
+// `sym_tol`: the symmetric strategy's diagonal pivot tolerance (UMFPACK's default 0.001).
+Row umfpack_row(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strategy,
+                double sym_tol = 0.001) {
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_di_defaults(control);
   control[UMFPACK_STRATEGY] = strategy;
+  control[UMFPACK_SYM_PIVOT_TOLERANCE] = sym_tol;
   void *symbolic = nullptr, *numeric = nullptr;
   const int n = static_cast<int>(A.rows());
   const int *Ap = A.outerIndexPtr(), *Ai = A.innerIndexPtr();
@@ -107,8 +110,11 @@ Row umfpack_row(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strate
     const char* used = info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
                            ? "symmetric strategy (AMD on A + A^T)"
                            : "unsymmetric strategy (COLAMD)";
-    r.note = fmt::format("{}{}, {:.3g} flops; pattern symmetry {:.2f}", used,
+    r.note = fmt::format("{}{}, pivot tolerance {}, {:.3g} flops; pattern symmetry {:.2f}", used,
                          control[UMFPACK_STRATEGY] == UMFPACK_STRATEGY_AUTO ? " (auto)" : "",
+                         info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
+                             ? sym_tol
+                             : control[UMFPACK_PIVOT_TOLERANCE],
                          info[UMFPACK_FLOPS], info[UMFPACK_PATTERN_SYMMETRY]);
     Eigen::VectorXd x(n);
     t = Clock::now();
@@ -225,6 +231,7 @@ int main(int argc, char** argv) {
     }
     rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_AUTO));
     rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_SYMMETRIC));
+    rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_SYMMETRIC, 1.0));
     if (A.rows() <= klu_max_dofs) {
       rows.push_back(klu_row(A, b, repeat));
     } else {

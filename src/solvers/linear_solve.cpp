@@ -150,6 +150,7 @@ class Umfpack {
     control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
   }
   ~Umfpack() { release(); }
+  bool analysed() const { return analysed_; }
   Umfpack(const Umfpack&) = delete;
   Umfpack& operator=(const Umfpack&) = delete;
 
@@ -279,6 +280,7 @@ bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
   thread_local PatternCache<LuSlot> cache;
   bool analyse = false;
   LuSlot& slot = cache.slot_for(A, analyse);
+  analyse = analyse || !slot.lu.analysed();  // (a failed analysis is tried again)
   bool factored = false;
   timed(
       analyse, [&] { slot.lu.analyse(A); }, [&] { factored = slot.lu.factorize(A); });
