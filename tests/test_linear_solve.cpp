@@ -313,17 +313,17 @@ TEST(LinearSolve, LargeSystemWithComparedOrderingsSolves) {
 }
 
 // The LU path (UMFPACK) on an unsymmetric system whose diagonal is zero: the rows of the
-// convection-diffusion matrix shifted cyclically by one, so every pivot is off the diagonal.
-// Reference: the dense LU with partial pivoting; both must be backward stable (normwise
-// backward error ||b - A x|| / (||A|| ||x|| + ||b||) at round-off), and agree to within the
-// classical bound cond(A) x backward error.
+// convection-diffusion matrix shifted cyclically by two (its entries lie at offsets 0, +-1 and +-n
+// from the diagonal), so every pivot is off the diagonal. Reference: the dense LU with partial
+// pivoting; both must be backward stable (normwise backward error ||b - A x|| / (||A|| ||x|| +
+// ||b||) at round-off), and agree to within the classical bound cond(A) x backward error.
 SpMat zero_diagonal_matrix(int n) {
   const SpMat G = grid_matrix(n, -0.5, 0.5);
   const int size = n * n;
   std::vector<Eigen::Triplet<double>> t;
   for (int c = 0; c < size; ++c) {
     for (SpMat::InnerIterator it(G, c); it; ++it) {
-      t.emplace_back((it.row() + 1) % size, c, it.value());
+      t.emplace_back((it.row() + 2) % size, c, it.value());
     }
   }
   SpMat A(size, size);
