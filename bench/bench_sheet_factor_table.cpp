@@ -2,7 +2,8 @@
 // sheet of n x n segments (200 x 200 x 0.1 mm, clamped along one edge), slightly deformed,
 // its stiffness K = -d(generalized force)/d(pose) assembled once; then CHOLMOD (what
 // sparse_solve uses on the symmetric part) and Eigen's SparseLU with COLAMD (the unsymmetric
-// path) on it: fill, analyse / factor / solve times, and the whole sparse_solve call.
+// path until 2026-11-27; UMFPACK since: bench_lu_factor_table) on it: fill, analyse / factor /
+// solve times, and the whole sparse_solve call.
 // Usage: bench_sheet_factor_table [--lu-max-dofs N] [n...]   (default n: 32 100 316;
 // LU is skipped above N dofs, default 70000)
 #include <fmt/format.h>

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include "solvers/linear_solve.hpp"
@@ -308,6 +310,107 @@ TEST(LinearSolve, LargeSystemWithComparedOrderingsSolves) {
   EXPECT_EQ(info.path, LinearSolvePath::Cholesky);
   EXPECT_LT(relative_error(x, x_true),
             std::sqrt(double(S.size())) * condition_number(n, -0.5) * kBackwardError);
+}
+
+// The LU path (UMFPACK) on an unsymmetric system whose diagonal is zero: the rows of the
+// convection-diffusion matrix shifted cyclically by two (its entries lie at offsets 0, +-1 and +-n
+// from the diagonal), so every pivot is off the diagonal. Reference: the dense LU with partial
+// pivoting; both must be backward stable (normwise backward error ||b - A x|| / (||A|| ||x|| +
+// ||b||) at round-off), and agree to within the classical bound cond(A) x backward error.
+SpMat zero_diagonal_matrix(int n) {
+  const SpMat G = grid_matrix(n, -0.5, 0.5);
+  const int size = n * n;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < size; ++c) {
+    for (SpMat::InnerIterator it(G, c); it; ++it) {
+      t.emplace_back((it.row() + 2) % size, c, it.value());
+    }
+  }
+  SpMat A(size, size);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+double normwise_backward_error(const Eigen::MatrixXd& A, const Eigen::VectorXd& x,
+                               const Eigen::VectorXd& b) {
+  return (b - A * x).norm() / (A.norm() * x.norm() + b.norm());
+}
+
+TEST(LinearSolve, UnsymmetricLuMatchesTheDenseLu) {
+  const SpMat A = zero_diagonal_matrix(10);
+  for (Eigen::Index k = 0; k < A.rows(); ++k) ASSERT_EQ(A.coeff(k, k), 0.0);
+  const Eigen::MatrixXd Ad(A);
+  const Eigen::VectorXd b = A * known_solution(static_cast<int>(A.rows()));
+  Eigen::VectorXd x;
+  LinearSolveInfo info;
+  linear_solve_counters() = {};
+  ASSERT_TRUE(sparse_solve(A, b, x, &info));
+  EXPECT_EQ(info.path, LinearSolvePath::LU);
+  EXPECT_EQ(linear_solve_counters().lu_factorizations, 1);
+  const Eigen::VectorXd x_dense = Ad.partialPivLu().solve(b);
+  const double eps = std::numeric_limits<double>::epsilon();
+  EXPECT_LT(normwise_backward_error(Ad, x, b), 10 * eps);
+  EXPECT_LT(normwise_backward_error(Ad, x_dense, b), 10 * eps);
+  EXPECT_LT((Ad * x - b).norm() / b.norm(), 1e-14);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Ad);
+  const double cond = svd.singularValues()(0) / svd.singularValues().tail(1)(0);
+  EXPECT_LT(relative_error(x, x_dense), 4 * cond * 10 * eps);  // 2 x (cond x 2 x 10 eps)
+}
+
+// Singular unsymmetric systems are refused: a zero row, a zero column (structurally singular),
+// and an exactly singular 2 x 2 block [2 4; 1 2] (its elimination leaves an exact zero pivot
+// whichever row is chosen: 2 - 0.5 x 4 and 4 - 2 x 2).
+TEST(LinearSolve, SingularUnsymmetricMatrixIsRefused) {
+  const SpMat G = grid_matrix(6, -0.5, 0.5);
+  Eigen::VectorXd x;
+  SpMat zero_row = G, zero_column = G;
+  zero_row.prune([](int i, int, double) { return i != 7; });
+  zero_column.prune([](int, int j, double) { return j != 7; });
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < G.outerSize(); ++c) {
+    for (SpMat::InnerIterator it(G, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  }
+  const int n = static_cast<int>(G.rows());
+  t.emplace_back(n, n, 2.0);
+  t.emplace_back(n, n + 1, 4.0);
+  t.emplace_back(n + 1, n, 1.0);
+  t.emplace_back(n + 1, n + 1, 2.0);
+  SpMat block(n + 2, n + 2);
+  block.setFromTriplets(t.begin(), t.end());
+  for (const SpMat* A : {&zero_row, &zero_column, &block}) {
+    LinearSolveInfo info;
+    EXPECT_FALSE(sparse_solve(*A, Eigen::VectorXd::Ones(A->rows()), x, &info));
+    EXPECT_EQ(info.path, LinearSolvePath::LU);
+  }
+}
+
+// A pattern's kept analysis gives the same bits as a fresh one: a second matrix of the same
+// pattern solved with the first one's analysis, then again after kCachedPatterns other
+// patterns evicted it (a new analysis); one LU solve of several right-hand sides gives each
+// column's single solve to the bit.
+TEST(LinearSolve, LuAnalysisReuseGivesTheBitsOfAFreshAnalysis) {
+  const SpMat A1 = grid_matrix(30, -0.5, 0.5), A2 = grid_matrix(30, -0.7, 0.3);
+  const Eigen::VectorXd b = A2 * known_solution(static_cast<int>(A2.rows()));
+  Eigen::VectorXd x_reused, x_fresh, y;
+  linear_solve_counters() = {};
+  ASSERT_TRUE(sparse_solve(A1, b, y));
+  ASSERT_TRUE(sparse_solve(A2, b, x_reused));
+  EXPECT_EQ(linear_solve_counters().analyses, 1);
+  for (int k = 0; k < kCachedPatterns; ++k) {
+    const SpMat other = grid_matrix(10 + k, -0.5, 0.5);
+    ASSERT_TRUE(sparse_solve(other, Eigen::VectorXd::Ones(other.rows()), y));
+  }
+  ASSERT_TRUE(sparse_solve(A2, b, x_fresh));
+  EXPECT_EQ(linear_solve_counters().analyses, 2 + kCachedPatterns);
+  EXPECT_EQ(linear_solve_counters().lu_factorizations, 3 + kCachedPatterns);
+  EXPECT_EQ(x_reused, x_fresh);
+  Eigen::MatrixXd B(b.size(), 2), X;
+  B << b, Eigen::VectorXd::Ones(b.size());
+  ASSERT_TRUE(sparse_solve(A2, B, X));
+  Eigen::VectorXd x_ones;
+  ASSERT_TRUE(sparse_solve(A2, Eigen::VectorXd(B.col(1)), x_ones));
+  EXPECT_EQ(Eigen::VectorXd(X.col(0)), x_fresh);
+  EXPECT_EQ(Eigen::VectorXd(X.col(1)), x_ones);
 }
 
 }  // namespace linear_solve_test

@@ -1,7 +1,8 @@
 #include "solvers/linear_solve.hpp"
 
+#include <umfpack.h>
+
 #include <Eigen/CholmodSupport>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,7 +17,6 @@ namespace finseg {
 namespace {
 
 using SpMat = Eigen::SparseMatrix<double>;
-using SparseLU = Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>>;
 
 // kSymmetricAsymmetry: systems up to this asymmetry ratio ||A - A^T||_F / ||A||_F are
 // symmetric up to the round-off of the assembly (measured below 1e-16 on symmetric tangents)
@@ -134,9 +134,68 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
   }
 };
 
+// UMFPACK's LU (multifrontal, BLAS-3 on its frontal matrices) of one sparsity pattern: the
+// symbolic analysis (the fill-reducing ordering and the frontal matrices' sizes) kept, the
+// numeric factorization redone for each matrix. The analysis is given the pattern only (no
+// values), so that it, and every result after it, depends on the pattern alone.
+class Umfpack {
+ public:
+  Umfpack() {
+    umfpack_di_defaults(control_);
+    control_[UMFPACK_PRL] = 0;  // silent: a singular matrix is an expected event here
+    // AMD on the pattern of A + A^T, diagonal pivots preferred (kept unless below 0.001 of
+    // their column's largest entry): our Newton matrices have symmetric patterns (6 x 6
+    // blocks), where this filled 14-52 % less than the COLAMD ordering of the unsymmetric
+    // strategy that UMFPACK's automatic choice took on them (BENCHMARKS.md).
+    control_[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+  }
+  ~Umfpack() { release(); }
+  bool analysed() const { return analysed_; }
+  Umfpack(const Umfpack&) = delete;
+  Umfpack& operator=(const Umfpack&) = delete;
+
+  // The analysis of A's pattern; false if UMFPACK refused it (out of memory).
+  bool analyse(const SpMat& A) {
+    release();
+    const int n = static_cast<int>(A.rows());
+    analysed_ = umfpack_di_symbolic(n, n, A.outerIndexPtr(), A.innerIndexPtr(), nullptr, &symbolic_,
+                                    control_, info_) == UMFPACK_OK;
+    return analysed_;
+  }
+  // The numeric factorization of A (the analysed pattern); false if A is singular (an exact
+  // zero pivot: UMFPACK_WARNING_singular_matrix) or memory ran out.
+  bool factorize(const SpMat& A) {
+    if (numeric_ != nullptr) umfpack_di_free_numeric(&numeric_);
+    if (!analysed_) return false;
+    const int status = umfpack_di_numeric(A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(),
+                                          symbolic_, &numeric_, control_, info_);
+    return status == UMFPACK_OK;
+  }
+  // x = A^-1 b with the last factorization (of A), refined against A by UMFPACK (at most
+  // Control[UMFPACK_IRSTEP] = 2 steps, while they reduce the backward error).
+  bool solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    x.resize(b.size());
+    return umfpack_di_solve(UMFPACK_A, A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), x.data(),
+                            b.data(), numeric_, control_, info_) == UMFPACK_OK &&
+           x.allFinite();
+  }
+
+ private:
+  void release() {
+    if (numeric_ != nullptr) umfpack_di_free_numeric(&numeric_);
+    if (symbolic_ != nullptr) umfpack_di_free_symbolic(&symbolic_);
+    analysed_ = false;
+  }
+  double control_[UMFPACK_CONTROL];
+  double info_[UMFPACK_INFO];
+  void* symbolic_ = nullptr;
+  void* numeric_ = nullptr;
+  bool analysed_ = false;
+};
+
 struct LuSlot {
   Pattern pattern;
-  SparseLU lu;
+  Umfpack lu;
 };
 
 // CHOLMOD chooses simplicial L D L^T for small systems and supernodal L L^T (BLAS) for
@@ -213,18 +272,25 @@ double refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b,
 // Solves A X = B, one factorization for all columns (each solved as a vector: the same bits
 // as a single solve).
 bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
+  if (A.rows() != A.cols() || B.rows() != A.rows()) return false;
+  if (A.rows() == 0) {  // UMFPACK refuses n = 0; the empty system has the empty solution
+    X.resize(0, B.cols());
+    return true;
+  }
   thread_local PatternCache<LuSlot> cache;
   bool analyse = false;
   LuSlot& slot = cache.slot_for(A, analyse);
+  analyse = analyse || !slot.lu.analysed();  // (a failed analysis is tried again)
+  bool factored = false;
   timed(
-      analyse, [&] { slot.lu.analyzePattern(A); }, [&] { slot.lu.factorize(A); });
+      analyse, [&] { slot.lu.analyse(A); }, [&] { factored = slot.lu.factorize(A); });
   ++linear_solve_counters().lu_factorizations;
-  if (slot.lu.info() != Eigen::Success) return false;
+  if (!factored) return false;
   X.resize(B.rows(), B.cols());
+  Eigen::VectorXd x;
   for (Eigen::Index j = 0; j < B.cols(); ++j) {
     const Eigen::VectorXd b = B.col(j);
-    const Eigen::VectorXd x = slot.lu.solve(b);
-    if (slot.lu.info() != Eigen::Success || !x.allFinite()) return false;
+    if (!slot.lu.solve(A, b, x)) return false;
     X.col(j) = x;
   }
   return true;
@@ -273,8 +339,10 @@ std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, b
   return std::nullopt;
 }
 
-// Flushes subnormal entries to zero (Eigen's SparseLU never returns on them: a modulus of
-// 1e-320 Pa made some; they are zero for every purpose here); false if an entry is not finite.
+// Flushes subnormal entries to zero (a modulus of 1e-320 Pa made some, and Eigen's SparseLU,
+// the LU before UMFPACK, never returned on them; they are zero for every purpose here, so a
+// matrix of them is singular, and no factorization runs on slow subnormal arithmetic); false
+// if an entry is not finite.
 bool clean_entries(SpMat& A) {
   for (double* v = A.valuePtr(); v != A.valuePtr() + A.nonZeros(); ++v) {
     if (!std::isfinite(*v)) return false;

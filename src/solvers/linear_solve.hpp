@@ -1,7 +1,7 @@
 // Sparse linear solves for the Newton iterations. A system symmetric up to round-off goes to
 // CHOLMOD (sparse Cholesky or L D L^T with a fill-reducing ordering), refined against the
 // matrix; any other (friction, follower loads, a rotation Jacobian away from equilibrium), or
-// one CHOLMOD cannot factor, to Eigen's SparseLU (COLAMD). A SymmetricMatrix (symmetric by
+// one CHOLMOD cannot factor, to UMFPACK's LU (AMD on A + A^T). A SymmetricMatrix (symmetric by
 // construction) goes to CHOLMOD without these checks. The symbolic analyses of the last few
 // sparsity patterns are kept between solves. docs/solvers.md: when and why.
 #pragma once
@@ -15,7 +15,7 @@ namespace finseg {
 enum class LinearSolvePath {
   Cholesky,  ///< CHOLMOD supernodal L L^T of the symmetric part (large, positive definite)
   LDLT,      ///< CHOLMOD simplicial L D L^T of the symmetric part (small, or indefinite)
-  LU,        ///< SparseLU of the whole matrix (unsymmetric, or the symmetric path failed)
+  LU,        ///< UMFPACK's LU of the whole matrix (unsymmetric, or the symmetric path failed)
 };
 
 /// What a solve did, for tests and benchmarks.
