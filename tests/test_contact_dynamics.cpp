@@ -267,6 +267,55 @@ TEST(ContactDynamics, ContinuousFrictionCreepsAtTheSpeedWhereMuEqualsTanPhi) {
   EXPECT_NEAR(r.creep_speed / v_creep, 1.0, 0.01);
 }
 
+// A 1 g plate thrown at v0 along a clamped horizontal plate (continuous friction, mu_s = mu_d,
+// so that the law has no falling branch) slows down at a = mu g (Coulomb). Backward Euler with
+// constant steps h: v_k = v0 - k h a while positive, x = h sum v_k, i.e. with n = floor(v0 /
+// (h a)) x = h (n v0 - h a n (n + 1) / 2), which tends to Coulomb's v0^2 / (2 a) as h -> 0.
+// The step in which the plate stops starts on the law's plateau, where Newton's tangent has
+// no slope along the slip: the full correction throws the slip velocity across zero onto the
+// opposite plateau and back (a 2-cycle); without the implicit solver's backtracking that step
+// failed and was cut by 4 (docs/solvers.md, "Contact: why the implicit solver crawled").
+TEST(ContactDynamics, ImplicitPlateThrownAlongAPlateStopsAtCoulombsDistance) {
+  const double m = 1e-3, mu = 0.3, v0 = 0.05, h = 2e-3;
+  Model mod;
+  mod.gravity_W = Vec3(0, 0, -kG);
+  mod.bodies.push_back(
+      plate("ground", 1, Vec3(0.4, 0.1, kThick), Vec3::Zero(), Mat3::Identity(), true));
+  const ContactSuggestion sug = suggest_contact(m, kG, 1e-5);
+  ContactDef& c = mod.contact;
+  c.enabled = true;
+  c.stiffness = sug.stiffness;
+  c.damping = sug.damping;
+  c.damping_depth = sug.damping_depth;
+  c.friction = FrictionModel::Continuous;
+  c.mu_static = mu;
+  c.mu_dynamic = mu;
+  c.stiction_speed = 1e-4;
+  c.friction_speed = 1e-3;
+  const double delta0 = std::pow(m * kG / c.stiffness, 1 / c.exponent);
+  mod.bodies.push_back(plate("block", m, Vec3(0.02, 0.02, kThick), Vec3(0, 0, kThick - delta0)));
+  mod.finalize_dofs();
+  State s = initial_state(mod);
+  s.v_W[1] = Vec3(v0, 0, 0);
+  SolverSettings set;
+  set.kind = SolverKind::Implicit;
+  set.t_end = 2 * v0 / (mu * kG);
+  set.output_interval = set.t_end;
+  set.dt = set.dt_max = h;
+  set.atol = 1e-5;  // the local error h/2 |dv| = h^2 a / 2 = 5.9e-6 m: every step is h
+  const SolverStats st = run_solver(mod, s, set, [](const State&, const BodyForces&) {});
+  ASSERT_EQ(st.status, "ok") << st.message;
+  const double a = mu * kG;
+  const double n = std::floor(v0 / (h * a));
+  const double x_be = h * (n * v0 - h * a * n * (n + 1) / 2);
+  RecordProperty("stop_distance_error", fmt::format("{:.2e}", s.p_W[1].x() / x_be - 1));
+  RecordProperty("coulomb_distance_ratio",
+                 fmt::format("{:.4f}", s.p_W[1].x() / (v0 * v0 / (2 * a))));
+  EXPECT_NEAR(s.p_W[1].x() / x_be, 1.0, 2e-3);
+  EXPECT_LT(s.v_W[1].norm(), 1e-4);  // at rest, up to the creep of the regularisation
+  EXPECT_EQ(st.rejected_steps, 0);   // one stop, one unknown speed: Newton must converge
+}
+
 TEST(ContactDynamics, AnchorFrictionHoldsWithoutCreep) {
   const double phi = 20 * kDegToRad;
   const InclineResult r = incline(phi, FrictionModel::Anchor, SolverKind::Implicit, 1, 10);

@@ -60,12 +60,14 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
   // term, both small per step like the derivatives of M(q) left out already: its symmetric
   // part goes to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
   const bool symmetric = conservative_stiffness(model) && !has_velocity_forces(model);
-  for (int it = 1; it <= max_iterations; ++it) {
-    place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> A;
+  // Residual and iteration matrix at x_at (forces and Jacobian evaluated there).
+  const auto linearise = [&](const Eigen::VectorXd& x_at) {
+    place_state(model, start, h, map.dq0 + map.cq * x_at, map.v0 + map.cv * x_at, state);
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
     ++stats.jacobian_evaluations;
-    ++stats.newton_iterations;
     const Eigen::SparseMatrix<double> M = mass_matrix(model, state);
     Eigen::VectorXd g = generalized_forces(model, f);
     Eigen::SparseMatrix<double> dv = jac.dv;
@@ -73,21 +75,40 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
       g -= gyroscopic_forces(model, state);
       dv -= gyroscopic_jacobian(model, state);
     }
-    const Eigen::VectorXd r = M * x - res.b - res.s * g;
-    const Eigen::SparseMatrix<double> A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
-    Eigen::VectorXd dx;
+    r = M * x_at - res.b - res.s * g;
+    A = M - (res.s * map.cv) * dv - (res.s * map.cq) * jac.dq;
+  };
+  linearise(x);
+  for (int it = 1; it <= max_iterations; ++it) {
+    ++stats.newton_iterations;
     if (!r.allFinite()) return false;
+    Eigen::VectorXd dx;
     const bool solved = symmetric ? sparse_solve(SymmetricMatrix::symmetric_part_of(A), -r, dx)
                                   : solve_with_volume_stiffness(
                                         A, res.s * map.cq, volume_stiffness(model, state), -r, dx);
     if (!solved) return false;
-    x += dx;
     if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {
+      x += dx;
       place_state(model, start, h, map.dq0 + map.cq * x, map.v0 + map.cv * x, state);
       compute_forces(model, state, f);
       ++stats.force_evaluations;
       return true;
     }
+    // Backtracking on |r|: a full step that does not lower the residual is halved (at most
+    // kHalvings times; the shortest is taken then). Without it Newton cycles for ever between
+    // the two sides of a steep, saturating force such as regularised Coulomb friction, whose
+    // plateau's tangent jumps the slip velocity across zero and back (docs/solvers.md).
+    const double merit = r.squaredNorm();
+    constexpr int kHalvings = 5;
+    double a = 1;
+    Eigen::VectorXd x_try;
+    for (int k = 0;; ++k) {
+      x_try = x + a * dx;
+      linearise(x_try);
+      if (k == kHalvings || (r.allFinite() && r.squaredNorm() < merit)) break;
+      a *= 0.5;
+    }
+    x = x_try;
   }
   return false;
 }

@@ -29,7 +29,8 @@ void place_state(const Model& model, const State& start, double h, const Eigen::
                  const Eigen::VectorXd& v, State& state);
 
 /// Newton iterations on r(x) = 0 from the guess in `x`, stopping when the pose correction
-/// |cq dx|_inf falls below `pose_tol` (m and rad). On success leaves `state` at the solution
+/// |cq dx|_inf falls below `pose_tol` (m and rad); a correction that does not lower |r| is
+/// halved (up to 5 times). On success leaves `state` at the solution
 /// with its forces in `f` and returns true; false when Newton fails (not finite, singular,
 /// or max_iterations reached).
 bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
