@@ -187,6 +187,55 @@ TEST(ContactLaws, StepAndFrictionCoefficientMatchTheirDefinitions) {
               1e-12);
 }
 
+// The continuous law with its falling branch taken at a lagged speed (the slip speed of the
+// last accepted step): at its own speed it is Adams' law (mu = rising x weakening, since a
+// STEP is affine in its end values); at a fixed lag the force never falls as the speed grows
+// (no negative damping), where Adams' law falls by mu_s - mu_d over [v_s, v_d]; and its
+// closed-form slope is the derivative of the force.
+TEST(ContactLaws, LaggedFallingBranchIsTheLawAtItsOwnSpeedAndNeverFalls) {
+  ContactDef c;
+  c.mu_static = 0.5;
+  c.mu_dynamic = 0.3;
+  c.stiction_speed = 1e-3;
+  c.friction_speed = 3e-3;
+  const double fn = 2.0;
+  const Vec3 dir = Vec3(3, -4, 0) / 5;
+  for (double v = 0; v <= 5e-3; v += 1e-4) {
+    const Vec3 v_t = v * dir;
+    EXPECT_NEAR(continuous_friction(c, fn, v_t, v).norm(), continuous_friction(c, fn, v_t).norm(),
+                1e-14)
+        << v;
+  }
+  EXPECT_LT(continuous_friction(c, fn, Vec3(2.5e-3, 0, 0)).norm(),
+            continuous_friction(c, fn, Vec3(1.5e-3, 0, 0)).norm());  // the branch falls
+  for (const double lag : {0.0, 0.5e-3, 1.5e-3, 2e-3, 4e-3}) {
+    double previous = 0;
+    for (double v = 0; v <= 5e-3; v += 1e-4) {
+      const double f = continuous_friction(c, fn, Vec3(v * dir), lag).norm();
+      EXPECT_GE(f, previous - 1e-15) << lag << " " << v;
+      previous = f;
+    }
+    // Slopes against central differences, on both sides of v_s and off the axis.
+    for (const double v : {0.3e-3, 0.9e-3, 1.2e-3, 2.5e-3}) {
+      const Vec3 v_t = v * dir + Vec3(0, 0, 0.1e-3);
+      const FrictionSlopes sl = continuous_friction_slopes(c, fn, v_t, lag);
+      EXPECT_LT((sl.f - continuous_friction(c, fn, v_t, lag)).norm(), 1e-15);
+      const double h = 1e-9;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 e = h * Vec3::Unit(k);
+        const Vec3 col = (continuous_friction(c, fn, Vec3(v_t + e), lag) -
+                          continuous_friction(c, fn, Vec3(v_t - e), lag)) /
+                         (2 * h);
+        EXPECT_LT((sl.d_vt.col(k) - col).norm(), 1e-6 * sl.d_vt.norm()) << lag << " " << v;
+      }
+      const Vec3 d_fn = (continuous_friction(c, fn + 1e-6, v_t, lag) -
+                         continuous_friction(c, fn - 1e-6, v_t, lag)) /
+                        2e-6;
+      EXPECT_LT((sl.d_fn - d_fn).norm(), 1e-8) << lag << " " << v;
+    }
+  }
+}
+
 TEST(ContactLaws, NormalForceIsImpactAndNeverAttractive) {
   ContactDef c;
   c.stiffness = 2e5;

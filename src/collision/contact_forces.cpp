@@ -108,7 +108,7 @@ Vec3T<T> friction_force(const ContactDef& def, const ActivePoint& pt, const T& f
                         const BodyKin<T>& tgt, PointReport* report) {
   if (def.friction == FrictionModel::Continuous ||
       (def.friction == FrictionModel::Anchor && pt.anchor == nullptr))
-    return continuous_friction(def, fn, v_t);
+    return continuous_friction(def, fn, v_t, lag_speed(def, pt));
   if (def.friction != FrictionModel::Anchor) return Vec3T<T>::Zero();
   using std::sqrt;
   const ContactAnchor& an = *pt.anchor;
@@ -263,6 +263,7 @@ void commit_contact_history(const Model& model, State& state) {
         an.r_tgt_B = tgt.R_WB.transpose() * (r.x_W - tgt.p_W);
         an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
       }
+      an.slip_speed = r.v_t.norm();
       next.push_back(an);
     }
   });

@@ -181,7 +181,7 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     VecJac Jft;
     if (def.friction == FrictionModel::Continuous ||
         (def.friction == FrictionModel::Anchor && pt.anchor == nullptr)) {
-      const FrictionSlopes fr = continuous_friction_slopes(def, fn, r.v_t);
+      const FrictionSlopes fr = continuous_friction_slopes(def, fn, r.v_t, lag_speed(def, pt));
       Jft.q = fr.d_fn * Jfn.q + fr.d_vt * Jvt.q;
       if (with_velocity) Jft.v = fr.d_fn * Jfn.v + fr.d_vt * Jvt.v;
     } else if (def.friction == FrictionModel::Anchor) {

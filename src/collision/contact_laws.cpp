@@ -66,19 +66,29 @@ double friction_coefficient_slope(const ContactDef& c, double v) {
   return step3_slope(v, c.stiction_speed, c.mu_static, c.friction_speed, c.mu_dynamic);
 }
 
-FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t) {
+FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t,
+                                          double lag_speed) {
   // f = -fn g(v2) v_t with g = mu(v) / v: df/dv_t = -fn (g I + 2 g' v_t v_t^T).
   const double v2 = v_t.squaredNorm();
   const double vs = c.stiction_speed;
+  const bool lagged = lag_speed >= 0;
+  const double w = lagged ? friction_weakening(c, lag_speed) : 1.0;
   double g, g_slope;  // g and dg / d(v2)
   if (v2 < 1e-6 * vs * vs) {
-    g = (c.mu_static / vs) * (1.5 - 0.5 * v2 / (vs * vs));
-    g_slope = -(c.mu_static / vs) * 0.5 / (vs * vs);
+    g = w * (c.mu_static / vs) * (1.5 - 0.5 * v2 / (vs * vs));
+    g_slope = -w * (c.mu_static / vs) * 0.5 / (vs * vs);
   } else {
     const double v = std::sqrt(v2);
-    const double mu = friction_coefficient(c, v);
+    double mu, mu_slope;
+    if (lagged) {
+      mu = w * rising_friction(c, v);
+      mu_slope = v <= vs ? w * step3_slope(v, -vs, -c.mu_static, vs, c.mu_static) : 0.0;
+    } else {
+      mu = friction_coefficient(c, v);
+      mu_slope = friction_coefficient_slope(c, v);
+    }
     g = mu / v;
-    g_slope = (friction_coefficient_slope(c, v) / v - mu / v2) / (2 * v);
+    g_slope = (mu_slope / v - mu / v2) / (2 * v);
   }
   FrictionSlopes r;
   r.f = -fn * g * v_t;

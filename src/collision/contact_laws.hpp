@@ -72,20 +72,39 @@ T friction_coefficient(const ContactDef& c, const T& v) {
   return step3(v, c.stiction_speed, c.mu_static, c.friction_speed, c.mu_dynamic);
 }
 
-/// Friction force of the continuous law: -F_n mu(|v_t|) v_t / |v_t|, smooth through v_t = 0
-/// (mu(v)/v tends to 3 mu_s / (2 v_s)).
+/// Adams' law factored as mu(v) = rising(v) * weakening(v): `rising_friction` is the odd
+/// STEP from 0 to mu_s on [0, v_s], mu_s beyond (never falls); `friction_weakening` is 1 up to
+/// v_s and the STEP down to mu_d / mu_s at v_d (the falling, Stribeck branch).
 template <class T>
-Vec3T<T> continuous_friction(const ContactDef& c, const T& fn, const Vec3T<T>& v_t) {
+T rising_friction(const ContactDef& c, const T& v) {
+  if (value_of(v) <= c.stiction_speed)
+    return step3(v, -c.stiction_speed, -c.mu_static, c.stiction_speed, c.mu_static);
+  return T(c.mu_static);
+}
+inline double friction_weakening(const ContactDef& c, double v) {
+  if (!(c.mu_static > 0) || v <= c.stiction_speed) return 1;
+  return step3(v, c.stiction_speed, 1.0, c.friction_speed, c.mu_dynamic / c.mu_static);
+}
+
+/// Friction force of the continuous law: -F_n mu(|v_t|) v_t / |v_t|, smooth through v_t = 0
+/// (mu(v)/v tends to 3 mu_s / (2 v_s)). With `lag_speed` >= 0 (the point's slip speed at the
+/// last accepted step) the falling branch is taken there: mu = rising(|v_t|) *
+/// weakening(lag_speed), so that the force never falls as the unknown speed grows
+/// (docs/contact.md, "Friction").
+template <class T>
+Vec3T<T> continuous_friction(const ContactDef& c, const T& fn, const Vec3T<T>& v_t,
+                             double lag_speed = -1) {
   using std::sqrt;
   const T v2 = v_t.squaredNorm();
   const double vs = c.stiction_speed;
+  const double w = lag_speed >= 0 ? friction_weakening(c, lag_speed) : 1.0;
   T ratio;  // mu(v) / v
   if (value_of(v2) < 1e-6 * vs * vs) {
     // Odd cubic about 0: mu = mu_s (3/2 x - 1/2 x^3), x = v / v_s.
-    ratio = T(c.mu_static / vs) * (T(1.5) - T(0.5) * v2 / T(vs * vs));
+    ratio = T(w * c.mu_static / vs) * (T(1.5) - T(0.5) * v2 / T(vs * vs));
   } else {
     const T v = sqrt(v2);
-    ratio = friction_coefficient(c, v) / v;
+    ratio = (lag_speed >= 0 ? T(w) * rising_friction(c, v) : friction_coefficient(c, v)) / v;
   }
   return -fn * ratio * v_t;
 }
@@ -113,7 +132,8 @@ struct FrictionSlopes {
   Vec3 d_fn = Vec3::Zero();
   Mat3 d_vt = Mat3::Zero();
 };
-FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t);
+FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t,
+                                          double lag_speed = -1);
 
 /// Contact parameters derived for a gram-scale part (docs/contact.md, "Choosing values").
 struct ContactSuggestion {

@@ -19,6 +19,12 @@ struct ActivePoint {
   const ContactAnchor* anchor = nullptr;
 };
 
+/// Slip speed where the continuous friction law takes its falling branch for this point: its
+/// speed at the last accepted step when it has history, else -1 (the current speed).
+inline double lag_speed(const ContactDef& def, const ActivePoint& pt) {
+  return def.friction == FrictionModel::Continuous && pt.anchor ? pt.anchor->slip_speed : -1;
+}
+
 /// One touching pair after the narrow phase.
 struct PairContact {
   int a = -1, b = -1;

@@ -72,6 +72,9 @@ struct ContactAnchor {
   double impact_speed = 0;      ///< penetration rate when the contact began, m/s
   int side = 1;                 ///< which face of the target plate the point is on
   bool sliding = false;         ///< Anchor friction: currently slipping
+  /// Slip speed at the last accepted step, m/s (-1: not known); the continuous law takes its
+  /// falling branch there (docs/contact.md, "Friction").
+  double slip_speed = -1;
 };
 
 /// Contact history in State (sorted by key); written only by commit_contact_history().

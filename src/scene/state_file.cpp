@@ -47,6 +47,7 @@ json contact_json(const ContactState& c) {
                        {"r_src_B_m", vec_json(a.r_src_B)},
                        {"r_tgt_B_m", vec_json(a.r_tgt_B)},
                        {"impact_speed_m_s", a.impact_speed},
+                       {"slip_speed_m_s", a.slip_speed},
                        {"side", a.side},
                        {"sliding", a.sliding}});
   }
@@ -153,6 +154,12 @@ void read_contact(const Reader& in, const json& j, std::size_t bodies, State& s)
     x.r_src_B = in.vec(in.key(a, "r_src_B_m", f), f + ".r_src_B_m");
     x.r_tgt_B = in.vec(in.key(a, "r_tgt_B_m", f), f + ".r_tgt_B_m");
     x.impact_speed = in.number(in.key(a, "impact_speed_m_s", f), f + ".impact_speed_m_s");
+    // Optional: states written before the key existed continue with the exact law.
+    if (a.contains("slip_speed_m_s")) {
+      x.slip_speed = in.number(a["slip_speed_m_s"], f + ".slip_speed_m_s");
+      if (x.slip_speed < 0 && x.slip_speed != -1)
+        in.fail(f + ".slip_speed_m_s", "expected -1 (not known) or a speed >= 0");
+    }
     const long side = in.integer(in.key(a, "side", f), f + ".side");
     if (side != 1 && side != -1) in.fail(f + ".side", "expected 1 or -1");
     x.side = static_cast<int>(side);
