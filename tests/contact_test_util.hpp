@@ -21,6 +21,20 @@ inline BodyDef plate(const std::string& name, double mass, const Vec3& size, con
   return b;
 }
 
+/// Contact switched on with the suggested normal values and continuous (Adams) friction of
+/// coefficients mu_s, mu_d (the default transition speeds).
+inline ContactDef continuous_contact(const ContactSuggestion& sug, double mu_s, double mu_d) {
+  ContactDef c;
+  c.enabled = true;
+  c.stiffness = sug.stiffness;
+  c.damping = sug.damping;
+  c.damping_depth = sug.damping_depth;
+  c.friction = FrictionModel::Continuous;
+  c.mu_static = mu_s;
+  c.mu_dynamic = mu_d;
+  return c;
+}
+
 /// Contact switched on with the suggested normal and tangential values and elastic-anchor
 /// friction of coefficients mu_s, mu_d.
 inline ContactDef anchor_contact(const ContactSuggestion& sug, double mu_s, double mu_d) {

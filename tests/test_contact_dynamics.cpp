@@ -283,15 +283,8 @@ Thrown thrown_plate(double mu_s, double mu_d, double v_d = 1e-3) {
   mod.gravity_W = Vec3(0, 0, -kG);
   mod.bodies.push_back(
       plate("ground", 1, Vec3(0.4, 0.1, kThick), Vec3::Zero(), Mat3::Identity(), true));
-  const ContactSuggestion sug = suggest_contact(m, kG, 1e-5);
+  mod.contact = test::continuous_contact(suggest_contact(m, kG, 1e-5), mu_s, mu_d);
   ContactDef& c = mod.contact;
-  c.enabled = true;
-  c.stiffness = sug.stiffness;
-  c.damping = sug.damping;
-  c.damping_depth = sug.damping_depth;
-  c.friction = FrictionModel::Continuous;
-  c.mu_static = mu_s;
-  c.mu_dynamic = mu_d;
   c.stiction_speed = 1e-4;
   c.friction_speed = v_d;
   const double delta0 = std::pow(m * kG / c.stiffness, 1 / c.exponent);
@@ -567,15 +560,7 @@ TEST(ContactDynamics, FoldedPanelsPressedTogetherNeverPassThrough) {
   mod.gravity_W = Vec3(0, 0, -kG);
   for (int i = 4; i < 8; ++i)
     mod.loads.push_back({i, Vec3::Zero(), Vec3(0, 0, -100 * mass * kG), Vec3::Zero(), false});
-  const ContactSuggestion sug = suggest_contact(mass, kG, 1e-5);
-  ContactDef& c = mod.contact;
-  c.enabled = true;
-  c.stiffness = sug.stiffness;
-  c.damping = sug.damping;
-  c.damping_depth = sug.damping_depth;
-  c.friction = FrictionModel::Continuous;
-  c.mu_static = 0.4;
-  c.mu_dynamic = 0.3;
+  mod.contact = test::continuous_contact(suggest_contact(mass, kG, 1e-5), 0.4, 0.3);
   mod.finalize_dofs();
   State s = initial_state(mod);
   SolverSettings set;
