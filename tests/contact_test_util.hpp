@@ -38,14 +38,8 @@ inline ContactDef continuous_contact(const ContactSuggestion& sug, double mu_s, 
 /// Contact switched on with the suggested normal and tangential values and elastic-anchor
 /// friction of coefficients mu_s, mu_d.
 inline ContactDef anchor_contact(const ContactSuggestion& sug, double mu_s, double mu_d) {
-  ContactDef c;
-  c.enabled = true;
-  c.stiffness = sug.stiffness;
-  c.damping = sug.damping;
-  c.damping_depth = sug.damping_depth;
+  ContactDef c = continuous_contact(sug, mu_s, mu_d);
   c.friction = FrictionModel::Anchor;
-  c.mu_static = mu_s;
-  c.mu_dynamic = mu_d;
   c.tangential_stiffness = sug.tangential_stiffness;
   c.tangential_damping = sug.tangential_damping;
   return c;
