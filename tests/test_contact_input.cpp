@@ -27,6 +27,7 @@ friction:
 panel_exclusion: 3
 groups: [[1, 2], [2, 3]]
 crease_zone: 3.0e-4
+initial_overlap: ignore
 )";
 
 ContactDef read(const std::string& text) {
@@ -46,6 +47,7 @@ TEST(ContactInput, ReadsEveryField) {
   EXPECT_EQ(c.tangential_stiffness, 500);
   EXPECT_EQ(c.panel_exclusion, 3);
   EXPECT_EQ(c.crease_zone, 3e-4);
+  EXPECT_EQ(c.initial_overlap, InitialOverlap::Ignore);
   ASSERT_EQ(c.groups.size(), 2u);
   EXPECT_EQ(c.groups[1][1], 2);
 }
@@ -80,6 +82,7 @@ TEST(ContactInput, RefusesBadValuesNamingTheField) {
   expect_refused("crease_zone: 3.0e-4", "crease_zone: -1e-4", "contact.crease_zone");
   expect_refused("damping_law: flores", "damping_law: soft", "contact.damping_law");
   expect_refused("model: anchor", "model: sticky", "contact.friction.model");
+  expect_refused("initial_overlap: ignore", "initial_overlap: keep", "contact.initial_overlap");
   expect_refused("exponent: 1.5", "exponnent: 1.5", "contact.exponnent");
   expect_refused("stiffness: 1.2e5", "stiffness: stiff", "contact.stiffness");
   expect_refused("groups: [[1, 2], [2, 3]]", "groups: [[1, 0]]", "contact.groups[0][1]");

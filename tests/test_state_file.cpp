@@ -37,7 +37,7 @@ State busy_state(const Model& m) {
   for (std::size_t k = 0; k < s.history.size(); ++k)
     s.history[k] = {0.1 * k + 1e-9, int(k), k % 2 == 1};
   s.contact.anchors = {{3, Vec3(1, 2, 3) / 7, Vec3(-1, 0, 1) / 9, 0.25, -1, true, 2.5e-4},
-                       {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1}};
+                       {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1, 3e-5 / 7}};
   s.contact.p_W = s.p_W;
   s.contact.R_WB = s.R_WB;
   s.solver = {1e-6 / 3,
@@ -91,6 +91,7 @@ TEST(StateFile, RoundTripIsExact) {
     EXPECT_EQ(x.side, y.side);
     EXPECT_EQ(x.sliding, y.sliding);
     EXPECT_EQ(x.slip_speed, y.slip_speed);
+    EXPECT_EQ(x.overlap, y.overlap);
   }
   EXPECT_EQ(q.solver.t, s.solver.t);
   EXPECT_EQ(q.solver.dt, s.solver.dt);
@@ -143,6 +144,13 @@ TEST(StateFile, ValidationNamesFileAndField) {
             std::string::npos);
   j = good;  // written before the key existed: read as not known
   j["contact"]["anchors"][0].erase("slip_speed_m_s");
+  EXPECT_EQ(parse_error(j, m), "");
+  j = good;
+  j["contact"]["anchors"][1]["overlap_m"] = -1e-6;
+  EXPECT_NE(parse_error(j, m).find("s.json: contact.anchors[1].overlap_m: expected a penetration"),
+            std::string::npos);
+  j = good;  // written before the key existed: no overlap
+  j["contact"]["anchors"][1].erase("overlap_m");
   EXPECT_EQ(parse_error(j, m), "");
   j = good;
   j["t"] = "soon";

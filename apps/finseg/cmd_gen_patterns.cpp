@@ -348,9 +348,9 @@ void register_cone(CLI::App* gen) {
                   *gathered, scene_name)
         : from_stack
             ? fmt::format(
-                  "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding.\n"
-                  "# Pull it (contact off, docs/folding.md): finseg run {} --set "
-                  "contact.enabled=false --out deploy\n",
+                  "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding;\n"
+                  "# contact ignores their overlap at the start (docs/contact.md).\n"
+                  "# Pull it open: finseg run {} --out deploy\n",
                   *stowed, scene_name)
             : fmt::format(
                   "# Fold it (contact on): finseg run {0} --fold --out folded\n"
@@ -366,7 +366,7 @@ void register_cone(CLI::App* gen) {
         "fixtures: {{panels: [{}]}}   # {}\n"
         "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
         "thickness\n"
-        "contact: {{stiffness: {:.3g}, exponent: 1.5,\n"
+        "contact: {{stiffness: {:.3g}, exponent: 1.5,{}\n"
         "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
         "folding:\n"
         "  fraction: {:g}\n"
@@ -389,8 +389,8 @@ void register_cone(CLI::App* gen) {
         from_stack || from_gathered ? "one face of the top band"
         : s->base_disc              ? "the base disc's hub"
                                     : "one face of the base band",
-        most_force, contact_stiffness, *fraction, folding_solver, top.x(), top.y(), direction,
-        gauge, travel, travel / 100, travel);
+        most_force, contact_stiffness, from_stack ? " initial_overlap: ignore," : "", *fraction,
+        folding_solver, top.x(), top.y(), direction, gauge, travel, travel / 100, travel);
     if (!*inflate) {
       write_pair(*o, p, yaml);
       return;

@@ -62,9 +62,14 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
   return now.z() >= 0 ? 1 : -1;
 }
 
+/// What a detection is for: forces see the points that push (penetration beyond their
+/// overlap); a commit keeps every point that touches, so that its overlap can shrink; the
+/// commit at the start of a run gives new points their overlap under `initial_overlap: ignore`.
+enum class DetectFor { Forces, Commit, Start };
+
 /// Calls visit(const PairContact&) for every touching pair, in pair order.
 template <class Visit>
-void detect(const Model& model, const State& state, Visit&& visit) {
+void detect(const Model& model, const State& state, DetectFor what, Visit&& visit) {
   const ContactDef& def = model.contact;
   // Buffers kept per thread between calls: large models then detect without page faults.
   thread_local std::vector<Aabb> boxes;
@@ -90,10 +95,19 @@ void detect(const Model& model, const State& state, Visit&& visit) {
       for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
         const Vec3 p_W = S.point_W(samples[k].r_B);
         const ContactAnchor* an = find_anchor(state.contact, point_key(a, b, dir, k));
-        const int side = an ? an->side : entry_side(state, src, tgt, samples[k].r_B, st);
+        const bool ignored =
+            !an && what == DetectFor::Start && def.initial_overlap == InitialOverlap::Ignore;
+        // Overlapping layers that have not parted have no side: the one the point is on now.
+        const int kept = an        ? an->side
+                         : ignored ? 0
+                                   : entry_side(state, src, tgt, samples[k].r_B, st);
+        const int side = kept != 0 ? kept : G.R_WB.col(2).dot(p_W - G.p_W) >= 0 ? 1 : -1;
         const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
         if (!(c.depth > 0)) continue;
-        pc.points.push_back({dir, k, samples[k].r_B, dir_share * samples[k].weight, side, an});
+        const double overlap = ignored ? c.depth : an ? an->overlap : 0;
+        if (what == DetectFor::Forces && !(c.depth > overlap)) continue;
+        pc.points.push_back(
+            {dir, k, samples[k].r_B, dir_share * samples[k].weight, side, kept, an, overlap});
       }
     }
     if (!pc.points.empty()) visit(std::as_const(pc));
@@ -147,12 +161,13 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
     const PlateShape& ss = pt.dir == 0 ? pc.sa : pc.sb;
     const PlateShape& st = pt.dir == 0 ? pc.sb : pc.sa;
     const PointContact<T> c = point_on_plate(tgt, st, src.point_W(pt.r_B), ss.r, pt.side);
+    const T depth = c.depth - T(pt.overlap);  // what the force pushes against
     const Vec3T<T> v_rel =
         (src.v_W + src.w_W.cross(c.x_W - src.p_W)) - (tgt.v_W + tgt.w_W.cross(c.x_W - tgt.p_W));
     const T rate = -c.n_W.dot(v_rel);
     const double v0 = pt.anchor ? pt.anchor->impact_speed : value_of(rate);
-    const T fn = T(pt.share) * normal_force(def, c.depth, rate, v0);
-    energy += pt.share * contact_energy(def, value_of(c.depth));
+    const T fn = T(pt.share) * normal_force(def, depth, rate, v0);
+    energy += pt.share * contact_energy(def, value_of(depth));
     const Vec3T<T> v_t = v_rel - c.n_W * c.n_W.dot(v_rel);
     PointReport r;
     const Vec3T<T> f_t = friction_force(def, pt, fn, c.n_W, v_t, src, tgt, report ? &r : nullptr);
@@ -166,7 +181,7 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
         r.v_t[i] = value_of(v_t[i]);
         r.f_t[i] = value_of(f_t[i]);
       }
-      r.depth = value_of(c.depth);
+      r.depth = value_of(depth);
       r.normal = value_of(fn);
       r.friction = r.f_t.norm();
       r.share = pt.share;
@@ -182,6 +197,19 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
   return T(energy);
 }
 
+/// Shrinks an overlapped point's overlap to its penetration when the plates have parted
+/// further than before (`r.depth` is the penetration beyond `overlap` the kernel saw). A point
+/// with no side yet takes the side it is on when they do: coinciding layers choose their order
+/// by how they part, not by round-off. False when the point no longer touches.
+bool part_overlap(ContactAnchor& an, const PointReport& r, double overlap) {
+  const double touching = r.depth + overlap;
+  if (touching < overlap) {
+    an.overlap = touching;
+    if (an.side == 0) an.side = r.height >= 0 ? 1 : -1;
+  }
+  return touching > 0;
+}
+
 }  // namespace
 
 void add_contact_forces(const Model& model, const State& state, Assembler& assembler) {
@@ -190,7 +218,7 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   const ContactDef& def = model.contact;
   if (assembler.want_jacobian() && assembler.autodiff_elements()) {
     // The automatic-differentiation oracle of the closed form.
-    detect(model, state, [&](const PairContact& pc) {
+    detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
       assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
         return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
       });
@@ -200,7 +228,7 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   const bool jacobian = assembler.want_jacobian();
   const bool with_velocity = assembler.want_velocity_jacobian();
   std::vector<PointReport> reports;
-  detect(model, state, [&](const PairContact& pc) {
+  detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
     const BodyKin<double> A = assembler.kin(pc.a), B = assembler.kin(pc.b);
     Wrench<double> wa, wb;
     reports.clear();
@@ -216,7 +244,7 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   });
 }
 
-void commit_contact_history(const Model& model, State& state) {
+void commit_contact_history(const Model& model, State& state, bool start) {
   if (!model.contact.enabled) {
     state.contact = ContactState{};
     return;
@@ -224,7 +252,7 @@ void commit_contact_history(const Model& model, State& state) {
   const ContactDef& def = model.contact;
   std::vector<ContactAnchor> next;
   std::vector<PointReport> rep;
-  detect(model, state, [&](const PairContact& pc) {
+  detect(model, state, start ? DetectFor::Start : DetectFor::Commit, [&](const PairContact& pc) {
     rep.clear();
     const BodyKin<double> A = kin_of(state, pc.a), B = kin_of(state, pc.b);
     Wrench<double> wa, wb;
@@ -254,7 +282,8 @@ void commit_contact_history(const Model& model, State& state) {
           }
         }
       } else {
-        an.side = pt.side;
+        an.side = pt.anchor_side;
+        an.overlap = pt.overlap;
         an.impact_speed = r.penetration_rate;
         an.sliding = false;
         // New anchor placed so that its spring starts with the friction force just applied.
@@ -264,6 +293,7 @@ void commit_contact_history(const Model& model, State& state) {
         an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
       }
       an.slip_speed = r.v_t.norm();
+      if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap)) continue;
       next.push_back(an);
     }
   });
@@ -278,7 +308,7 @@ ContactSummary contact_summary(const Model& model, const State& state) {
   ContactSummary s;
   if (!model.contact.enabled) return s;
   std::vector<PointReport> rep;
-  detect(model, state, [&](const PairContact& pc) {
+  detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
     rep.clear();
     Wrench<double> wa, wb;
     evaluate_pair(model.contact, pc, kin_of(state, pc.a), kin_of(state, pc.b), wa, wb, &rep);

@@ -13,8 +13,9 @@ class Assembler;
 /// Adds the normal and friction forces of every active contact (nothing when disabled).
 void add_contact_forces(const Model& model, const State& state, Assembler& assembler);
 
-/// Updates contact history (friction anchors) after an accepted step.
-void commit_contact_history(const Model& model, State& state);
+/// Updates contact history (friction anchors, overlaps) after an accepted step; `start`: the
+/// state a run starts from (new points then keep their overlap under `initial_overlap: ignore`).
+void commit_contact_history(const Model& model, State& state, bool start = false);
 
 /// Contact of one pair of bodies.
 struct ContactPairForce {

@@ -15,8 +15,10 @@ struct ActivePoint {
   int sample = 0;  ///< index into the source plate's samples
   Vec3 r_B;        ///< sample in the source body frame, m
   double share = 0;
-  int side = 1;
+  int side = 1;         ///< face of the target the point is taken on in this evaluation
+  int anchor_side = 1;  ///< the side its history keeps (ContactAnchor::side; 0: none yet)
   const ContactAnchor* anchor = nullptr;
+  double overlap = 0;  ///< penetration not pushed against, m (ContactAnchor::overlap)
 };
 
 /// Slip speed where the continuous friction law takes its falling branch for this point: its

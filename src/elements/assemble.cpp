@@ -96,9 +96,9 @@ Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces)
   return g;
 }
 
-void commit_history(const Model& model, State& state) {
+void commit_history(const Model& model, State& state, bool start) {
   commit_crease_history(model, state);
-  commit_contact_history(model, state);
+  commit_contact_history(model, state, start);
   commit_chamber_gas(model, state);
 }
 

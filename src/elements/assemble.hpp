@@ -53,7 +53,7 @@ bool has_velocity_forces(const Model& model);
 Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces);
 
 /// Updates history variables (crease angle and opening count, contact anchors) after an
-/// accepted step or a converged equilibrium.
-void commit_history(const Model& model, State& state);
+/// accepted step or a converged equilibrium; `start`: the state a run starts from.
+void commit_history(const Model& model, State& state, bool start = false);
 
 }  // namespace finseg

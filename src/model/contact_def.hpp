@@ -25,6 +25,12 @@ enum class FrictionModel {
   Anchor,      ///< elastic anchor (bristle): holds static friction without creep
 };
 
+/// What the contact does with plates that overlap where a run starts.
+enum class InitialOverlap {
+  Push,    ///< push them apart like any penetration
+  Ignore,  ///< no force against the overlap found at the start; it shrinks as they part
+};
+
 /// Contact between segments: off unless enabled. All values SI. K and the damping describe
 /// the contact of a whole face lying flat on another: the force is shared by the plate's
 /// sample points (weights summing to 1, see docs/contact.md).
@@ -61,6 +67,9 @@ struct ContactDef {
   double margin = 0;  ///< extra broad-phase box growth, m, >= 0
   /// Sample points per plate side of the narrow phase (n x n on a rectangle), 2..16.
   int samples_per_edge = 3;
+  /// Overlaps at the start of a run: pushed apart, or ignored (layers of a stowed pattern
+  /// that coincide; docs/contact.md, "Layers that start overlapping").
+  InitialOverlap initial_overlap = InitialOverlap::Push;
 };
 
 /// History of one contact point (a sample point of one plate against the other plate of a
@@ -70,11 +79,16 @@ struct ContactAnchor {
   Vec3 r_src_B = Vec3::Zero();  ///< anchor on the sampled (source) body, its body frame, m
   Vec3 r_tgt_B = Vec3::Zero();  ///< anchor on the target body, its body frame, m
   double impact_speed = 0;      ///< penetration rate when the contact began, m/s
-  int side = 1;                 ///< which face of the target plate the point is on
+  /// Which face of the target plate the point is on; 0: none yet (a point that started
+  /// overlapping over the target's face takes the face it is on until the plates part).
+  int side = 1;
   bool sliding = false;         ///< Anchor friction: currently slipping
   /// Slip speed at the last accepted step, m/s (-1: not known); the continuous law takes its
   /// falling branch there (docs/contact.md, "Friction").
   double slip_speed = -1;
+  /// Penetration the normal force does not push against, m (>= 0): what the point had at the
+  /// start of a run with `initial_overlap: ignore`, never growing, shrinking as the plates part.
+  double overlap = 0;
 };
 
 /// Contact history in State (sorted by key); written only by commit_contact_history().

@@ -20,7 +20,7 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, 
   const Fields f(node, ctx,
                  {"enabled", "stiffness", "exponent", "damping_law", "damping", "damping_depth",
                   "restitution", "min_impact_speed", "friction", "panel_exclusion", "groups",
-                  "crease_zone", "margin", "samples_per_edge"});
+                  "crease_zone", "margin", "samples_per_edge", "initial_overlap"});
   // Numbers are only parsed here; validate_contact() checks their ranges (also for models
   // built through the API).
   auto number = [](const Fields& fs, const char* key, double fallback, const char* unit) {
@@ -52,6 +52,14 @@ ContactDef read_contact_section(const YAML::Node& node, const YamlContext& ctx, 
     f.fail("restitution", "required by damping_law " + law + " (a value in (0, 1])");
   c.panel_exclusion = f.integer("panel_exclusion", c.panel_exclusion, 0, 1000000);
   c.samples_per_edge = f.integer("samples_per_edge", c.samples_per_edge, 2, 16);
+  const std::string overlap = f.word("initial_overlap", "push");
+  if (overlap == "push") {
+    c.initial_overlap = InitialOverlap::Push;
+  } else if (overlap == "ignore") {
+    c.initial_overlap = InitialOverlap::Ignore;
+  } else {
+    f.fail("initial_overlap", quoted(overlap) + "; allowed: push, ignore");
+  }
   const std::vector<YAML::Node> groups =
       sequence(f.node("groups"), f.context("groups"), "panel lists");
   for (std::size_t i = 0; i < groups.size(); ++i) {

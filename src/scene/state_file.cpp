@@ -48,6 +48,7 @@ json contact_json(const ContactState& c) {
                        {"r_tgt_B_m", vec_json(a.r_tgt_B)},
                        {"impact_speed_m_s", a.impact_speed},
                        {"slip_speed_m_s", a.slip_speed},
+                       {"overlap_m", a.overlap},
                        {"side", a.side},
                        {"sliding", a.sliding}});
   }
@@ -160,8 +161,13 @@ void read_contact(const Reader& in, const json& j, std::size_t bodies, State& s)
       if (x.slip_speed < 0 && x.slip_speed != -1)
         in.fail(f + ".slip_speed_m_s", "expected -1 (not known) or a speed >= 0");
     }
+    if (a.contains("overlap_m")) {  // optional: absent, no overlap
+      x.overlap = in.number(a["overlap_m"], f + ".overlap_m");
+      if (!(x.overlap >= 0)) in.fail(f + ".overlap_m", "expected a penetration >= 0 m");
+    }
     const long side = in.integer(in.key(a, "side", f), f + ".side");
-    if (side != 1 && side != -1) in.fail(f + ".side", "expected 1 or -1");
+    if (side != 1 && side != -1 && side != 0)
+      in.fail(f + ".side", "expected 1, -1 or 0 (an overlapping point with no side yet)");
     x.side = static_cast<int>(side);
     x.sliding = in.boolean(in.key(a, "sliding", f), f + ".sliding");
     s.contact.anchors.push_back(x);

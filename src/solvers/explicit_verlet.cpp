@@ -79,7 +79,7 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
   stats.smallest_step = stats.largest_step = h;
   set_quasi_static(state, false);
   set_drives_at_time(model, state, state.t);
-  commit_history(model, state);  // the start is a state the structure is in
+  commit_history(model, state, true);  // the start is a state the structure is in
   BodyForces f;
   compute_forces(model, state, f);
   ++stats.force_evaluations;

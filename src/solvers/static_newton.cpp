@@ -450,7 +450,7 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
   const double lambda_end = state.load_scale;
   state.load_scale = 0;
   state.t = 0;
-  commit_history(model, state);  // the initial state is one the structure is in
+  commit_history(model, state, true);  // the initial state is one the structure is in
   compute_forces(model, state, f);
   if (!path) on_output(state, f);
   double dlambda = lambda_end / std::max(1, settings.load_steps);
