@@ -86,6 +86,7 @@ class GeneralizedAlpha final : public TimeStepper {
     memory.h_prev = h_;
   }
 
+  void forget_newton_matrix() override { reuse_.reset(); }
   double error_order() const override { return 3; }
 
  private:

@@ -42,6 +42,7 @@ class BackwardEuler final : public TimeStepper {
   void accept(bool restart) override {
     if (restart) reuse_.matrix.clear();
   }
+  void forget_newton_matrix() override { reuse_.reset(); }
   double error_order() const override { return 2; }
 
  private:

@@ -35,6 +35,12 @@ struct NewtonReuse {
   bool symmetric = false;     ///< made for the symmetric (Cholesky) path
   int age = 0;                ///< iterations it has served
   double eta = 1;             ///< theta / (1 - theta) of its last measured contraction rate theta
+  /// Forgets the matrix and its history (a run resumed from here starts the same way).
+  void reset() {
+    matrix.clear();
+    age = 0;
+    eta = 1;
+  }
 };
 
 /// Places `state` at `start` advanced by `h` in time with pose increment dq and velocity v.
