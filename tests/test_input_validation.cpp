@@ -204,6 +204,20 @@ TEST(StepLimits, RefusedAtReadTimeWithTheCount) {
                  "solver.dt_max", "at most 1e+09");
 }
 
+// Modified Newton's options (docs/scene.md): the range named, a word that is no boolean refused.
+TEST(SolverOptions, JacobianReuseKeysValidated) {
+  expect_refused(replaced(kSheet, "type: static", "type: implicit\n  jacobian_max_age: 0"),
+                 "solver.jacobian_max_age", "1000");
+  expect_refused(replaced(kSheet, "type: static", "type: implicit\n  jacobian_reuse: often"),
+                 "solver.jacobian_reuse", "true or false");
+  const Scene scene =
+      parse_scene(replaced(kSheet, "type: static",
+                           "type: implicit\n  jacobian_reuse: false\n  jacobian_max_age: 5"),
+                  "s.yaml");
+  EXPECT_FALSE(scene.solver.jacobian_reuse);
+  EXPECT_EQ(scene.solver.jacobian_max_age, 5);
+}
+
 TEST(StepLimits, PullStepRefusedAtReadTime) {
   expect_refused(replaced(kZigzag, "fold_angle_deg: 80}", "fold_angle_deg: 80, pull_step: 1e-11}"),
                  "zigzag.pull_step", "at most 1e+09");

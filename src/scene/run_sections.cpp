@@ -22,9 +22,10 @@ std::string scheme_name(ImplicitScheme scheme) {
 }
 
 SolverSettings read_solver_section(const Fields& root) {
-  const Fields f(root.node("solver"), root.context("solver"),
-                 {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol",
-                  "load_steps", "max_iterations", "tolerance", "scheme", "rho_inf"});
+  const Fields f(
+      root.node("solver"), root.context("solver"),
+      {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol", "load_steps",
+       "max_iterations", "tolerance", "scheme", "rho_inf", "jacobian_reuse", "jacobian_max_age"});
   SolverSettings s;
   const std::string type = f.word("type", "static");
   if (type == "static") {
@@ -56,6 +57,8 @@ SolverSettings read_solver_section(const Fields& root) {
   s.load_steps = f.integer("load_steps", s.load_steps, 1, 1000000);
   s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);
   s.tolerance = f.number("tolerance", s.tolerance, positive("(relative)"));
+  s.jacobian_reuse = f.flag("jacobian_reuse", s.jacobian_reuse);
+  s.jacobian_max_age = f.integer("jacobian_max_age", s.jacobian_max_age, 1, 1000);
   if (s.dt > s.t_end) f.fail("dt", "must not exceed t_end");
   return s;
 }

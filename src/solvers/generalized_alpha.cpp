@@ -25,7 +25,9 @@ namespace {
 class GeneralizedAlpha final : public TimeStepper {
  public:
   GeneralizedAlpha(const SolverSettings& s, double tol)
-      : p_(chung_hulbert(s.rho_inf)), max_iterations_(s.max_iterations), tol_(tol) {}
+      : p_(chung_hulbert(s.rho_inf)), max_iterations_(s.max_iterations), tol_(tol) {
+    reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
+  }
 
   // vdot_0 = M^-1 (g - gyro); the pseudo-acceleration starts equal to it.
   void begin(const Model& model, const State& state, const BodyForces& f) override {
@@ -60,8 +62,8 @@ class GeneralizedAlpha final : public TimeStepper {
     res.with_gyro = true;
     Eigen::VectorXd x = vdot_;
     StepTry r;
-    r.converged =
-        newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, x, state, f, stats);
+    r.converged = newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, x, state, f,
+                               stats, &reuse_);
     if (!r.converged) return r;
     // Zienkiewicz & Xie (1991): local position error (beta - 1/6) h^2 (vdot_{n+1} - vdot_n).
     r.error = std::abs(p_.beta - 1.0 / 6.0) * h * h * (x - vdot_).lpNorm<Eigen::Infinity>() / tol_;
@@ -72,6 +74,7 @@ class GeneralizedAlpha final : public TimeStepper {
   }
 
   void accept(bool restart) override {
+    if (restart) reuse_.matrix.clear();  // an event changed the forces' make-up
     vdot_ = next_vdot_;
     a_ = restart ? next_vdot_ : next_a_;
     h_ = next_h_;
@@ -83,12 +86,14 @@ class GeneralizedAlpha final : public TimeStepper {
     memory.h_prev = h_;
   }
 
+  void forget_newton_matrix() override { reuse_.reset(); }
   double error_order() const override { return 3; }
 
  private:
   AlphaParameters p_;
   int max_iterations_;
   double tol_;
+  NewtonReuse reuse_;  // the iteration matrix kept between steps
   Eigen::VectorXd vdot_, a_, next_vdot_, next_a_;
   double h_ = 0, next_h_ = 0;
 };

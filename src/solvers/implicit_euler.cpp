@@ -11,7 +11,9 @@ namespace {
 class BackwardEuler final : public TimeStepper {
  public:
   BackwardEuler(const SolverSettings& s, double tol)
-      : max_iterations_(s.max_iterations), tol_(tol) {}
+      : max_iterations_(s.max_iterations), tol_(tol) {
+    reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
+  }
 
   void begin(const Model&, const State&, const BodyForces&) override {}
 
@@ -29,19 +31,24 @@ class BackwardEuler final : public TimeStepper {
     res.s = h;
     Eigen::VectorXd v = v0;
     StepTry r;
-    r.converged =
-        newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, v, state, f, stats);
+    r.converged = newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, v, state, f,
+                               stats, &reuse_);
     if (r.converged) r.error = 0.5 * h * (v - v0).lpNorm<Eigen::Infinity>() / tol_;
     return r;
   }
 
   void remember(SolverMemory&) const override {}  // no history beyond the state
-  void accept(bool) override {}
+  // An event changed the forces' make-up: the next step starts with a new matrix.
+  void accept(bool restart) override {
+    if (restart) reuse_.matrix.clear();
+  }
+  void forget_newton_matrix() override { reuse_.reset(); }
   double error_order() const override { return 2; }
 
  private:
   int max_iterations_;
   double tol_;
+  NewtonReuse reuse_;  // the iteration matrix kept between steps
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "solvers/solver.hpp"
+#include "solvers/volume_stiffness.hpp"
 
 namespace finseg {
 
@@ -24,18 +25,38 @@ struct NewtonResidual {
   bool with_gyro = false;
 };
 
+/// The iteration matrix kept across Newton iterations and steps (modified Newton,
+/// docs/solvers.md): its factorization, what it was made with, and how well it contracts.
+/// Owned by the time stepper; `max_age` 1 is full Newton (a new matrix every iteration).
+struct NewtonReuse {
+  int max_age = 1;  ///< Newton iterations one factorization serves at most
+  KeptNewtonMatrix matrix;
+  double s_cq = 0, s_cv = 0;  ///< the coefficients of dF/dq and dF/dv it was made with
+  bool symmetric = false;     ///< made for the symmetric (Cholesky) path
+  int age = 0;                ///< iterations it has served
+  double eta = 1;             ///< theta / (1 - theta) of its last measured contraction rate theta
+  /// Forgets the matrix and its history (a run resumed from here starts the same way).
+  void reset() {
+    matrix.clear();
+    age = 0;
+    eta = 1;
+  }
+};
+
 /// Places `state` at `start` advanced by `h` in time with pose increment dq and velocity v.
 void place_state(const Model& model, const State& start, double h, const Eigen::VectorXd& dq,
                  const Eigen::VectorXd& v, State& state);
 
 /// Newton iterations on r(x) = 0 from the guess in `x`, stopping when the pose correction
 /// |cq dx|_inf falls below `pose_tol` (m and rad); a correction that does not lower |r| is
-/// halved (up to 5 times). On success leaves `state` at the solution
-/// with its forces in `f` and returns true; false when Newton fails (not finite, singular,
-/// or max_iterations reached).
+/// halved (up to 5 times). With `reuse` (max_age > 1) the iteration matrix is kept while it
+/// contracts (docs/solvers.md, "Modified Newton"); the residual is always exact. On success leaves
+/// `state` at the solution with its forces in `f` and returns true; false when Newton fails (not
+/// finite, singular, or max_iterations reached).
 bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
                   const NewtonResidual& res, int max_iterations, double pose_tol,
-                  Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats);
+                  Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats,
+                  NewtonReuse* reuse = nullptr);
 
 /// Gyroscopic vector (0, w_W x J_W w_W) of the free bodies.
 Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state);

@@ -112,6 +112,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
     if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
       next_output += every;
+      stepper->forget_newton_matrix();  // a run resumed from this output starts without one
       state.solver = memory();
       on_output(state, f);
       on_progress((state.t - t0) / (settings.t_end - t0));

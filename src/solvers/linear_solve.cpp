@@ -224,8 +224,25 @@ bool factor(Cholmod& f, bool& analysed, const SpMat& S) {
   return f.info() == Eigen::Success;
 }
 
-SymmetricSlot& symmetric_slot(const SpMat& S) {
-  thread_local PatternCache<SymmetricSlot> cache;
+// The pattern caches a solve uses: this thread's, or a kept factorization's own.
+struct Caches {
+  PatternCache<LuSlot>& lu;
+  PatternCache<SymmetricSlot>& symmetric;
+};
+
+Caches thread_caches() {
+  thread_local PatternCache<LuSlot> lu;
+  thread_local PatternCache<SymmetricSlot> symmetric;
+  return {lu, symmetric};
+}
+
+// The factorization a solve ended with (for a kept factorization to solve with again).
+struct UsedFactor {
+  const Cholmod* cholmod = nullptr;
+  Umfpack* umfpack = nullptr;
+};
+
+SymmetricSlot& symmetric_slot(PatternCache<SymmetricSlot>& cache, const SpMat& S) {
   bool fresh = false;
   return cache.slot_for(S, fresh);
 }
@@ -271,13 +288,13 @@ double refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b,
 
 // Solves A X = B, one factorization for all columns (each solved as a vector: the same bits
 // as a single solve).
-bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
+bool lu_solve(PatternCache<LuSlot>& cache, const SpMat& A, const Eigen::MatrixXd& B,
+              Eigen::MatrixXd& X, UsedFactor& used) {
   if (A.rows() != A.cols() || B.rows() != A.rows()) return false;
   if (A.rows() == 0) {  // UMFPACK refuses n = 0; the empty system has the empty solution
     X.resize(0, B.cols());
     return true;
   }
-  thread_local PatternCache<LuSlot> cache;
   bool analyse = false;
   LuSlot& slot = cache.slot_for(A, analyse);
   analyse = analyse || !slot.lu.analysed();  // (a failed analysis is tried again)
@@ -286,6 +303,7 @@ bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
       analyse, [&] { slot.lu.analyse(A); }, [&] { factored = slot.lu.factorize(A); });
   ++linear_solve_counters().lu_factorizations;
   if (!factored) return false;
+  used.umfpack = &slot.lu;
   X.resize(B.rows(), B.cols());
   Eigen::VectorXd x;
   for (Eigen::Index j = 0; j < B.cols(); ++j) {
@@ -302,10 +320,10 @@ bool lu_solve(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
 // accepted whatever the refinement reached (LU would add fill, not accuracy, where the
 // refinement stalls just above kBackwardError: 1.7e-14 on a generalized-alpha matrix of a
 // 10^4-segment sheet; at 10^5 the LU took more than 8 GB).
-std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, bool exact,
-                                               const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-                                               int& steps) {
-  SymmetricSlot& slot = symmetric_slot(S);
+std::optional<LinearSolvePath> symmetric_solve(PatternCache<SymmetricSlot>& cache, const SpMat& A,
+                                               const SpMat& S, bool exact, const Eigen::MatrixXd& B,
+                                               Eigen::MatrixXd& X, int& steps, UsedFactor& used) {
+  SymmetricSlot& slot = symmetric_slot(cache, S);
   // Each column refined as a vector, accepted if `accept` says so for its backward error.
   const auto solve_columns = [&](const Cholmod& f, auto accept) {
     X.resize(B.rows(), B.cols());
@@ -327,6 +345,7 @@ std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, b
         })) {
       return std::nullopt;
     }
+    used.cholmod = &slot.automatic;
     return slot.automatic.is_ll() ? LinearSolvePath::Cholesky : LinearSolvePath::LDLT;
   }
   // L L^T met a non-positive pivot (indefinite); L D L^T failed only on an exact zero pivot.
@@ -334,6 +353,7 @@ std::optional<LinearSolvePath> symmetric_solve(const SpMat& A, const SpMat& S, b
   ++linear_solve_counters().indefinite;
   if (factor(slot.ldlt, slot.ldlt_analysed, S) &&
       solve_columns(slot.ldlt, [](double e) { return e <= kBackwardError; })) {
+    used.cholmod = &slot.ldlt;
     return LinearSolvePath::LDLT;
   }
   return std::nullopt;
@@ -391,19 +411,23 @@ SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
 namespace {
 
 // The symmetric path for A (symmetric part S, S itself when `exact`), else LU of A.
-bool symmetric_else_lu(const SpMat& A, const SpMat& S, bool exact, const Eigen::MatrixXd& B,
-                       Eigen::MatrixXd& X, LinearSolveInfo& report) {
-  if (const auto path = symmetric_solve(A, S, exact, B, X, report.refinements)) {
+bool symmetric_else_lu(Caches caches, const SpMat& A, const SpMat& S, bool exact,
+                       const Eigen::MatrixXd& B, Eigen::MatrixXd& X, LinearSolveInfo& report,
+                       UsedFactor& used) {
+  if (const auto path =
+          symmetric_solve(caches.symmetric, A, S, exact, B, X, report.refinements, used)) {
     report.path = *path;
     return true;
   }
   report.path = LinearSolvePath::LU;
-  return lu_solve(A, B, X);
+  return lu_solve(caches.lu, A, B, X, used);
 }
 
-bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-                  LinearSolveInfo* info) {
-  SpMat Ac = A;
+// sparse_solve(A, B, X) with the given caches; `Ac` ends as the matrix solved (compressed,
+// subnormals flushed), `used` names the factorization.
+bool solve_system(Caches caches, const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                  LinearSolveInfo* info, SpMat& Ac, UsedFactor& used) {
+  Ac = A;
   Ac.makeCompressed();
   if (!clean_entries(Ac) || !B.allFinite()) return false;
   LinearSolveInfo report;
@@ -412,10 +436,34 @@ bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
   if (Ac.rows() > 0 && Ac.rows() == Ac.cols() && report.asymmetry <= kSymmetricAsymmetry) {
     // Also for a symmetric A: its stored pattern need not be (a stored zero), and CHOLMOD
     // crashed on such a pattern (ContactDynamics.StaticSolverHoldsAPlateInsideTheCone).
-    ok = symmetric_else_lu(Ac, symmetric_part(Ac), report.asymmetry == 0, B, X, report);
+    ok = symmetric_else_lu(caches, Ac, symmetric_part(Ac), report.asymmetry == 0, B, X, report,
+                           used);
   } else {
     report.path = LinearSolvePath::LU;
-    ok = lu_solve(Ac, B, X);
+    ok = lu_solve(caches.lu, Ac, B, X, used);
+  }
+  if (info != nullptr) *info = report;
+  return ok;
+}
+
+bool solve_system(const SpMat& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                  LinearSolveInfo* info) {
+  SpMat Ac;
+  UsedFactor used;
+  return solve_system(thread_caches(), A, B, X, info, Ac, used);
+}
+
+// sparse_solve(S, B, X) with the given caches; `used` names the factorization.
+bool solve_symmetric(Caches caches, const SymmetricMatrix& S, const Eigen::MatrixXd& B,
+                     Eigen::MatrixXd& X, LinearSolveInfo* info, UsedFactor& used) {
+  if (!S.finite() || !B.allFinite()) return false;
+  LinearSolveInfo report;
+  bool ok = false;
+  if (S.size() > 0) {
+    ok = symmetric_else_lu(caches, S.matrix(), S.matrix(), true, B, X, report, used);
+  } else {
+    report.path = LinearSolvePath::LU;
+    ok = lu_solve(caches.lu, S.matrix(), B, X, used);
   }
   if (info != nullptr) *info = report;
   return ok;
@@ -461,16 +509,8 @@ bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::Vec
   return counted([&] {
     if (!S.finite() || !b.allFinite()) return false;
     return solve_vector(b, x, [&](const Eigen::MatrixXd& B, Eigen::MatrixXd& X) {
-      LinearSolveInfo report;
-      bool ok = false;
-      if (S.size() > 0) {
-        ok = symmetric_else_lu(S.matrix(), S.matrix(), true, B, X, report);
-      } else {
-        report.path = LinearSolvePath::LU;
-        ok = lu_solve(S.matrix(), B, X);
-      }
-      if (info != nullptr) *info = report;
-      return ok;
+      UsedFactor used;
+      return solve_symmetric(thread_caches(), S, B, X, info, used);
     });
   });
 }
@@ -479,7 +519,7 @@ CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b
                               Eigen::VectorXd& x, LinearSolveInfo* info) {
   return counted([&] {
     if (!S.finite() || !b.allFinite() || S.size() == 0) return CholeskyStatus::Failed;
-    SymmetricSlot& slot = symmetric_slot(S.matrix());
+    SymmetricSlot& slot = symmetric_slot(thread_caches().symmetric, S.matrix());
     LinearSolveInfo report;
     if (!factor(slot.automatic, slot.automatic_analysed, S.matrix()) ||
         !slot.automatic.positive_definite()) {
@@ -494,6 +534,62 @@ CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b
     if (info != nullptr) *info = report;
     return CholeskyStatus::Solved;
   });
+}
+
+// The caches of its own (the thread's may be evicted or refactored by other solves between
+// ours), the matrix factored (for the refinement) and the factorization it ended with.
+struct KeptFactorization::Impl {
+  PatternCache<LuSlot> lu;
+  PatternCache<SymmetricSlot> symmetric;
+  SpMat A;
+  UsedFactor used;
+  bool valid = false;
+};
+
+KeptFactorization::KeptFactorization() : impl_(std::make_unique<Impl>()) {}
+KeptFactorization::~KeptFactorization() = default;
+
+bool KeptFactorization::factor_and_solve(const SpMat& A, const Eigen::MatrixXd& B,
+                                         Eigen::MatrixXd& X) {
+  Impl& k = *impl_;
+  k.used = {};
+  k.valid = counted([&] {
+    return solve_system({k.lu, k.symmetric}, A, B, X, nullptr, k.A, k.used);
+  });
+  return k.valid;
+}
+
+bool KeptFactorization::factor_and_solve(const SymmetricMatrix& S, const Eigen::MatrixXd& B,
+                                         Eigen::MatrixXd& X) {
+  Impl& k = *impl_;
+  k.used = {};
+  k.valid = counted([&] { return solve_symmetric({k.lu, k.symmetric}, S, B, X, nullptr, k.used); });
+  if (k.valid) k.A = S.matrix();
+  return k.valid;
+}
+
+bool KeptFactorization::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  const Impl& k = *impl_;
+  if (!k.valid || b.size() != k.A.rows() || !b.allFinite()) return false;
+  return counted([&] {
+    if (k.A.rows() == 0) {
+      x.resize(0);
+      return true;
+    }
+    if (k.used.cholmod != nullptr) {
+      int steps = 0;
+      return refined_solve(*k.used.cholmod, k.A, b, x, steps) < INFINITY;
+    }
+    return k.used.umfpack != nullptr && k.used.umfpack->solve(k.A, b, x);
+  });
+}
+
+bool KeptFactorization::valid() const {
+  return impl_->valid;
+}
+
+void KeptFactorization::clear() {
+  impl_->valid = false;
 }
 
 }  // namespace finseg

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 
 namespace finseg {
 
@@ -97,5 +98,32 @@ bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::Vec
 /// refined against S; otherwise reports it, so that the caller can shift S (static solver).
 CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
                               Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
+
+/// A factorization kept for further right-hand sides: factor once, solve many (the modified
+/// Newton iteration, docs/solvers.md). The factoring solve takes the path sparse_solve takes
+/// and gives its bits; later solves reuse that factor (refined against the same matrix on the
+/// symmetric path). Holds its own symbolic analyses, apart from sparse_solve's.
+class KeptFactorization {
+ public:
+  KeptFactorization();
+  ~KeptFactorization();
+  KeptFactorization(const KeptFactorization&) = delete;
+  KeptFactorization& operator=(const KeptFactorization&) = delete;
+  /// Solves A X = B as sparse_solve(A, B, X) does and keeps the factor; false (none kept)
+  /// where sparse_solve fails.
+  bool factor_and_solve(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
+                        Eigen::MatrixXd& X);
+  /// Solves S X = B as sparse_solve(S, b, x) does for each column and keeps the factor.
+  bool factor_and_solve(const SymmetricMatrix& S, const Eigen::MatrixXd& B, Eigen::MatrixXd& X);
+  /// x = A^-1 b with the kept factor; false if none is kept or x is not finite.
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  bool valid() const;
+  /// Forgets the factor (the analyses stay).
+  void clear();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace finseg

@@ -36,6 +36,10 @@ struct SolverSettings {
   int load_steps = 1;       ///< static: initial number of load increments
   int max_iterations = 50;  ///< static/implicit: Newton iterations per solve
   double tolerance = 1e-9;  ///< static: residual tolerance relative to the load scale
+  /// implicit: keep Newton's factored iteration matrix across iterations and steps while it
+  /// contracts (modified Newton, docs/solvers.md); false: a new one every iteration.
+  bool jacobian_reuse = true;
+  int jacobian_max_age = 20;  ///< implicit: Newton iterations one kept matrix serves at most
 };
 
 /// Counters and timing reported in summary.json.
@@ -45,7 +49,8 @@ struct SolverStats {
   long newton_iterations = 0;
   long force_evaluations = 0;
   long jacobian_evaluations = 0;
-  long settles = 0;  ///< static: limit points passed by pseudo-transient continuation
+  long factorizations = 0;  ///< implicit: factorizations of Newton's iteration matrix
+  long settles = 0;         ///< static: limit points passed by pseudo-transient continuation
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;
   std::string status = "ok";  ///< "ok" or "diverged"

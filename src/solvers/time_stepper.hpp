@@ -26,6 +26,9 @@ class TimeStepper {
   /// Advances `start` by h into `state` (forces in `f`); touches no history.
   virtual StepTry attempt(const Model& model, const State& start, double h, State& state,
                           BodyForces& f, SolverStats& stats) = 0;
+  /// Drops what Newton kept between steps (its iteration matrix): at each output, so that a
+  /// run resumed from that output's checkpoint continues exactly as the uninterrupted one.
+  virtual void forget_newton_matrix() = 0;
   /// Takes the last attempt's result as the new history; `restart` after an event (contact
   /// made or lost, a crease snapped) that makes the old accelerations meaningless.
   virtual void accept(bool restart) = 0;

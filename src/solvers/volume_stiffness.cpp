@@ -56,4 +56,59 @@ bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
   return x.allFinite();
 }
 
+bool KeptNewtonMatrix::factor_and_solve(const Eigen::SparseMatrix<double>& A, double s,
+                                        VolumeStiffness terms, const Eigen::VectorXd& b,
+                                        Eigen::VectorXd& x) {
+  const int n = static_cast<int>(terms.a.size());
+  a_.clear();
+  Eigen::MatrixXd B(b.size(), n + 1), Y;
+  B.col(0) = b;
+  for (int j = 0; j < n; ++j) B.col(j + 1) = terms.a[j];
+  if (!factor_.factor_and_solve(A, B, Y)) return false;
+  if (n == 0) {
+    x = Y.col(0);
+    return true;
+  }
+  // As in solve_with_volume_stiffness, with Z and the capacitance matrix kept.
+  Z_ = Y.rightCols(n);
+  Eigen::MatrixXd cap(n, n);
+  Eigen::VectorXd Uty(n);
+  for (int i = 0; i < n; ++i) {
+    Uty[i] = terms.a[i].dot(Y.col(0));
+    for (int j = 0; j < n; ++j) cap(i, j) = terms.a[i].dot(Z_.col(j));
+    cap(i, i) += 1 / (s * terms.k[i]);
+  }
+  capacitance_.compute(cap);
+  if (!capacitance_.isInvertible()) {
+    factor_.clear();
+    return false;
+  }
+  a_ = std::move(terms.a);
+  x = Y.col(0) - Z_ * capacitance_.solve(Uty);
+  if (!x.allFinite()) factor_.clear();
+  return valid();
+}
+
+bool KeptNewtonMatrix::factor_and_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
+                                        Eigen::VectorXd& x) {
+  a_.clear();
+  Eigen::MatrixXd X;
+  if (!factor_.factor_and_solve(S, Eigen::MatrixXd(b), X)) return false;
+  x = X.col(0);
+  return true;
+}
+
+bool KeptNewtonMatrix::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  Eigen::VectorXd y;
+  if (!factor_.solve(b, y)) return false;
+  if (a_.empty()) {
+    x = std::move(y);
+    return true;
+  }
+  Eigen::VectorXd Uty(static_cast<Eigen::Index>(a_.size()));
+  for (std::size_t i = 0; i < a_.size(); ++i) Uty[static_cast<Eigen::Index>(i)] = a_[i].dot(y);
+  x = y - Z_ * capacitance_.solve(Uty);
+  return x.allFinite();
+}
+
 }  // namespace finseg

@@ -4,11 +4,13 @@
 // matrix and added by the Sherman-Morrison-Woodbury formula (docs/gas.md, "Newton").
 #pragma once
 
+#include <Eigen/LU>
 #include <Eigen/SparseCore>
 #include <vector>
 
 #include "model/model.hpp"
 #include "model/state.hpp"
+#include "solvers/linear_solve.hpp"
 
 namespace finseg {
 
@@ -27,5 +29,27 @@ VolumeStiffness volume_stiffness(const Model& model, const State& state);
 bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
                                  const VolumeStiffness& terms, const Eigen::VectorXd& b,
                                  Eigen::VectorXd& x);
+
+/// Newton's matrix A + s sum_k k_k a_k a_k^T (or a symmetric S) factored once and solved
+/// many times (modified Newton): the factor of A, Z = A^-1 a_k and the capacitance matrix's
+/// LU are kept, so that a later solve is one back substitution and a k x k solve.
+class KeptNewtonMatrix {
+ public:
+  /// Solves as solve_with_volume_stiffness does (the same bits) and keeps the factors.
+  bool factor_and_solve(const Eigen::SparseMatrix<double>& A, double s, VolumeStiffness terms,
+                        const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// Solves as sparse_solve(S, b, x) does and keeps the factor (no gas terms).
+  bool factor_and_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// Solves with the kept factors; false if none are kept or x is not finite.
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  bool valid() const { return factor_.valid(); }
+  void clear() { factor_.clear(); }
+
+ private:
+  KeptFactorization factor_;
+  std::vector<Eigen::VectorXd> a_;  // the gas terms' a_k (empty: none)
+  Eigen::MatrixXd Z_;               // A^-1 a_k
+  Eigen::FullPivLU<Eigen::MatrixXd> capacitance_;
+};
 
 }  // namespace finseg

@@ -37,7 +37,9 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"rho_inf", s.rho_inf},
           {"load_steps", s.load_steps},
           {"max_iterations", s.max_iterations},
-          {"tolerance", s.tolerance}};
+          {"tolerance", s.tolerance},
+          {"jacobian_reuse", s.jacobian_reuse},
+          {"jacobian_max_age", s.jacobian_max_age}};
 }
 
 nlohmann::json stats_json(const SolverStats& s) {
@@ -46,6 +48,7 @@ nlohmann::json stats_json(const SolverStats& s) {
           {"newton_iterations", s.newton_iterations},
           {"force_evaluations", s.force_evaluations},
           {"jacobian_evaluations", s.jacobian_evaluations},
+          {"factorizations", s.factorizations},
           {"settles", s.settles},
           {"smallest_step_s", s.smallest_step},
           {"largest_step_s", s.largest_step},

@@ -1,0 +1,110 @@
+// Modified Newton (the iteration matrix kept across iterations and steps, docs/solvers.md):
+// it reaches full Newton's solution to the Newton tolerance, keeps the matrix where it
+// contracts, and makes a new one where a contact switches on and the kept one stops
+// contracting.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact_test_util.hpp"
+#include "generators/cantilever.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/implicit_newton.hpp"
+#include "validation_cantilever.hpp"
+
+namespace finseg {
+namespace modified_newton_test {
+
+// One backward-Euler step of h from `start` (as solvers/implicit_euler.cpp sets it up);
+// returns the end velocity, leaves the end state in `end`.
+struct Step {
+  Eigen::VectorXd v;
+  State end;
+  SolverStats stats;
+  bool converged = false;
+};
+
+Step backward_euler(const Model& model, const State& start, double h, double pose_tol,
+                    NewtonReuse* reuse) {
+  AffineStep map;
+  map.dq0 = Eigen::VectorXd::Zero(model.num_dofs);
+  map.v0 = Eigen::VectorXd::Zero(model.num_dofs);
+  map.cq = h;
+  map.cv = 1;
+  NewtonResidual res;
+  res.b = momentum(model, start);
+  res.s = h;
+  Step s;
+  s.v = velocity_vector(model, start);
+  BodyForces f;
+  s.converged =
+      newton_solve(model, start, h, map, res, 50, pose_tol, s.v, s.end, f, s.stats, reuse);
+  return s;
+}
+
+// The stocky strip of the solver agreement test, clamped, loaded at its tip from rest.
+Model loaded_strip() {
+  CantileverSpec s = validation::slender_strip(8);
+  s.thickness = 1e-2;
+  s.tip_force = Vec3(0, 0, -2 * bending_rigidity(s) / (s.length * s.length));
+  s.damping_time = 1e-4;
+  return build_cantilever_model(s);
+}
+
+TEST(ModifiedNewton, KeptMatrixReachesFullNewtonsStepOnALoadedStrip) {
+  const Model model = loaded_strip();
+  const double h = 1e-5, tol = 1e-12;  // pose tolerance, m and rad
+  NewtonReuse reuse;
+  reuse.max_age = 20;
+  const State start = initial_state(model);
+  // Step 1 makes the matrix.
+  const Step full1 = backward_euler(model, start, h, tol, nullptr);
+  const Step kept1 = backward_euler(model, start, h, tol, &reuse);
+  ASSERT_TRUE(full1.converged && kept1.converged);
+  EXPECT_GE(kept1.stats.factorizations, 1);
+  EXPECT_LT(h * (kept1.v - full1.v).lpNorm<Eigen::Infinity>(), tol);
+  // Step 2 (from full Newton's state) contracts on the kept matrix: no new one.
+  const Step full = backward_euler(model, full1.end, h, tol, nullptr);
+  const Step kept = backward_euler(model, full1.end, h, tol, &reuse);
+  ASSERT_TRUE(full.converged && kept.converged);
+  EXPECT_EQ(full.stats.factorizations, full.stats.newton_iterations);
+  EXPECT_EQ(kept.stats.factorizations, 0);
+  EXPECT_EQ(kept.stats.jacobian_evaluations, 0);
+  // Both within the pose tolerance of the exact root: within twice of each other.
+  EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
+}
+
+TEST(ModifiedNewton, MatrixOfFreeFlightIsRenewedWhenContactSwitchesOn) {
+  // A 1 g plate falling at 0.1 m/s onto a clamped plate (no gravity), Hertz contact
+  // (K = 1e9 N/m^1.5): a free-flight step leaves the matrix M, which cannot stand for the
+  // contact stiffness of the next step (h^2 K_eff / m of several), so that step must renew it.
+  constexpr double kThick = 2e-4, v0 = 0.1, h = 5e-5;
+  Model m;
+  m.bodies.push_back(
+      test::plate("ground", 1, Vec3(0.1, 0.1, kThick), Vec3::Zero(), Mat3::Identity(), true));
+  m.bodies.push_back(
+      test::plate("plate", 1e-3, Vec3(0.02, 0.02, kThick), Vec3(0, 0, kThick + 1.5 * v0 * h)));
+  m.contact.enabled = true;
+  m.contact.stiffness = 1e9;
+  m.contact.exponent = 1.5;
+  m.contact.damping_depth = 1e-5;
+  m.finalize_dofs();
+  State start = initial_state(m);
+  start.v_W[1] = Vec3(0, 0, -v0);
+  const double tol = 1e-12;
+  NewtonReuse reuse;
+  reuse.max_age = 20;
+  const Step flight = backward_euler(m, start, h, tol, &reuse);
+  ASSERT_TRUE(flight.converged);
+  ASSERT_GT(flight.end.p_W[1].z(), kThick);  // still in the air
+  EXPECT_EQ(flight.stats.factorizations, 1);
+  const Step full = backward_euler(m, flight.end, h, tol, nullptr);
+  const Step kept = backward_euler(m, flight.end, h, tol, &reuse);
+  ASSERT_TRUE(full.converged && kept.converged);
+  ASSERT_LT(full.end.p_W[1].z(), kThick);  // in contact
+  EXPECT_GE(kept.stats.factorizations, 1);
+  EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
+}
+
+}  // namespace modified_newton_test
+}  // namespace finseg
