@@ -107,6 +107,26 @@ TEST(ContactOverlap, CoincidingPlatesTakeTheirOrderFromHowTheyPart) {
   }
 }
 
+TEST(ContactOverlap, CoincidingPlatesPassFreelyUntilAQuarterThicknessApart) {
+  const Model m = two_plates(0, InitialOverlap::Ignore);
+  State s = initial_state(m);
+  commit_contact_history(m, s, true);
+  move_and_commit(m, s, 0.2 * kThick);  // not yet a quarter apart: no side, no force
+  for (const ContactAnchor& a : s.contact.anchors) EXPECT_EQ(a.side, 0);
+  s.p_W[1] = Vec3(0, 0, -0.1 * kThick);
+  EXPECT_EQ(contact_summary(m, s).active, 0);
+  move_and_commit(m, s, -0.25 * kThick);  // a quarter apart below: below for good
+  for (const ContactAnchor& a : s.contact.anchors) {
+    EXPECT_NE(a.side, 0);
+    EXPECT_NEAR(a.overlap, 0.75 * kThick, 1e-18);
+  }
+  s.p_W[1] = Vec3(0, 0, -0.15 * kThick);
+  const ContactSummary c = contact_summary(m, s);
+  ASSERT_EQ(c.pairs.size(), 1u);
+  const double expected = m.contact.stiffness * std::pow(0.1 * kThick, m.contact.exponent);
+  EXPECT_NEAR(c.pairs[0].f_b_W.z(), -expected, 1e-9 * expected);  // the top plate pushed down
+}
+
 TEST(ContactOverlap, PushIsTheDefaultAndPushesAtTheStart) {
   EXPECT_EQ(ContactDef{}.initial_overlap, InitialOverlap::Push);
   const Model m = two_plates(0.5 * kThick, InitialOverlap::Push);

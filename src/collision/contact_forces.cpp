@@ -105,7 +105,8 @@ void detect(const Model& model, const State& state, DetectFor what, Visit&& visi
         const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
         if (!(c.depth > 0)) continue;
         const double overlap = ignored ? c.depth : an ? an->overlap : 0;
-        if (what == DetectFor::Forces && !(c.depth > overlap)) continue;
+        // No force before the point has a side: the layers pass each other freely until then.
+        if (what == DetectFor::Forces && (kept == 0 || !(c.depth > overlap))) continue;
         pc.points.push_back(
             {dir, k, samples[k].r_B, dir_share * samples[k].weight, side, kept, an, overlap});
       }
@@ -198,15 +199,17 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
 }
 
 /// Shrinks an overlapped point's overlap to its penetration when the plates have parted
-/// further than before (`r.depth` is the penetration beyond `overlap` the kernel saw). A point
-/// with no side yet takes the side it is on when they do: coinciding layers choose their order
-/// by how they part, not by round-off. False when the point no longer touches.
-bool part_overlap(ContactAnchor& an, const PointReport& r, double overlap) {
+/// further than before (`r.depth` is the penetration beyond `overlap` the kernel saw, `radii`
+/// the plates' half thicknesses summed). A point with no side yet takes the side it is on once
+/// the plates are a quarter of their thickness apart (coinciding layers choose their order by
+/// how they part, not by round-off or the first step's jitter). False when it no longer touches.
+bool part_overlap(ContactAnchor& an, const PointReport& r, double overlap, double radii) {
   const double touching = r.depth + overlap;
-  if (touching < overlap) {
-    an.overlap = touching;
-    if (an.side == 0) an.side = r.height >= 0 ? 1 : -1;
+  if (an.side == 0) {
+    if (touching > 0.75 * radii) return true;
+    an.side = r.height >= 0 ? 1 : -1;
   }
+  an.overlap = std::min(overlap, touching);
   return touching > 0;
 }
 
@@ -293,7 +296,7 @@ void commit_contact_history(const Model& model, State& state, bool start) {
         an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
       }
       an.slip_speed = r.v_t.norm();
-      if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap)) continue;
+      if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap, pc.sa.r + pc.sb.r)) continue;
       next.push_back(an);
     }
   });
