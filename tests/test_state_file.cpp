@@ -36,8 +36,9 @@ State busy_state(const Model& m) {
   }
   for (std::size_t k = 0; k < s.history.size(); ++k)
     s.history[k] = {0.1 * k + 1e-9, int(k), k % 2 == 1};
-  s.contact.anchors = {{3, Vec3(1, 2, 3) / 7, Vec3(-1, 0, 1) / 9, 0.25, -1, true, 2.5e-4},
-                       {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1, 3e-5 / 7}};
+  s.contact.anchors = {
+      {3, Vec3(1, 2, 3) / 7, Vec3(-1, 0, 1) / 9, 0.25, -1, true, 2.5e-4},
+      {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1, 3e-5 / 7}};
   s.contact.p_W = s.p_W;
   s.contact.R_WB = s.R_WB;
   s.solver = {1e-6 / 3,

@@ -82,7 +82,7 @@ struct ContactAnchor {
   /// Which face of the target plate the point is on; 0: none yet (a point that started
   /// overlapping over the target's face takes the face it is on until the plates part).
   int side = 1;
-  bool sliding = false;         ///< Anchor friction: currently slipping
+  bool sliding = false;  ///< Anchor friction: currently slipping
   /// Slip speed at the last accepted step, m/s (-1: not known); the continuous law takes its
   /// falling branch there (docs/contact.md, "Friction").
   double slip_speed = -1;
