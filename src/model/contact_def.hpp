@@ -80,7 +80,7 @@ struct ContactAnchor {
   Vec3 r_tgt_B = Vec3::Zero();  ///< anchor on the target body, its body frame, m
   double impact_speed = 0;      ///< penetration rate when the contact began, m/s
   /// Which face of the target plate the point is on; 0: none yet (a point that started
-  /// overlapping over the target's face takes the face it is on until the plates part).
+  /// overlapping: no force until the plates are a quarter of their thickness apart).
   int side = 1;
   bool sliding = false;  ///< Anchor friction: currently slipping
   /// Slip speed at the last accepted step, m/s (-1: not known); the continuous law takes its
