@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "cli_test_util.hpp"
 #include "core/error.hpp"
@@ -180,6 +181,44 @@ TEST(StopRequest, EndsTheRunAtTheNextOutput) {
     // The 5th output: the first step at or past 4 output intervals.
     EXPECT_GE(s.t, 4 * 0.01 / 100 - 1e-12);
     EXPECT_LE(s.t, 4 * 0.01 / 100 + stats.largest_step);
+  }
+}
+
+// Between outputs a stop request ends the run at the next accepted step, with the solver's
+// memory in the State; continued from it, the run ends where an uninterrupted one does
+// (explicit: to the bit, the same steps; implicit: within the steps' error tolerance, its kept
+// Newton matrix is not saved).
+TEST(StopRequest, EndsTheRunBetweenOutputsAtTheNextStep) {
+  const Model m = strip();
+  for (SolverKind kind : {SolverKind::Explicit, SolverKind::Implicit}) {
+    SolverSettings set;
+    set.kind = kind;
+    set.t_end = 0.01;
+    set.output_interval = set.t_end;  // outputs at the start and the end only
+    State whole = initial_state(m);
+    ASSERT_EQ(run_solver(m, whole, set, nullptr).status, "ok");
+    State s = initial_state(m);
+    std::vector<State> outputs;
+    clear_stop_request();
+    const SolverStats stats = run_solver(
+        m, s, set, [&](const State& x, const BodyForces&) { outputs.push_back(x); },
+        [](const SolverProgress& p) {
+          if (p.stats->steps == 3) request_stop();
+        });
+    clear_stop_request();
+    EXPECT_EQ(stats.status, "interrupted");
+    EXPECT_EQ(stats.steps, 4);
+    ASSERT_EQ(outputs.size(), 1u);  // the start: the stop is no output
+    EXPECT_EQ(s.solver.t, s.t);
+    EXPECT_LT(s.t, 0.5 * set.t_end);
+    State resumed = s;  // what the checkpoint holds
+    ASSERT_EQ(run_solver(m, resumed, set, nullptr).status, "ok");
+    EXPECT_EQ(resumed.t, whole.t);
+    // Implicit: the steps' local error tolerance (the runs part where the Newton iterates do).
+    const double tol = kind == SolverKind::Explicit ? 0.0 : set.atol + set.rtol * m.sheet.length;
+    for (size_t b = 0; b < m.bodies.size(); ++b) {
+      EXPECT_LE((resumed.p_W[b] - whole.p_W[b]).norm(), tol) << b;
+    }
   }
 }
 

@@ -343,7 +343,9 @@ void register_cone(CLI::App* gen) {
         from_gathered
             ? fmt::format(
                   "# Starts gathered ({:g} of the way to every other generator on the axis): "
-                  "no facets coincide.\n"
+                  "no facets coincide;\n"
+                  "# contact ignores the overlap of facets that start closer than the thickness "
+                  "(docs/contact.md).\n"
                   "# Pull it open (contact on): finseg run {} --out deploy\n",
                   *gathered, scene_name)
         : from_stack
@@ -389,8 +391,9 @@ void register_cone(CLI::App* gen) {
         from_stack || from_gathered ? "one face of the top band"
         : s->base_disc              ? "the base disc's hub"
                                     : "one face of the base band",
-        most_force, contact_stiffness, from_stack ? " initial_overlap: ignore," : "", *fraction,
-        folding_solver, top.x(), top.y(), direction, gauge, travel, travel / 100, travel);
+        most_force, contact_stiffness,
+        from_stack || from_gathered ? " initial_overlap: ignore," : "", *fraction, folding_solver,
+        top.x(), top.y(), direction, gauge, travel, travel / 100, travel);
     if (!*inflate) {
       write_pair(*o, p, yaml);
       return;
@@ -414,7 +417,7 @@ void register_cone(CLI::App* gen) {
         "title: gathered cone inflated\n{}"
         "fixtures: {{panels: [{}]}}   # one face of the top band\n"
         "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
-        "contact: {{stiffness: {:.3g}, exponent: 1.5,\n"
+        "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
         "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
         "chambers:\n"
         "  - name: cone\n"

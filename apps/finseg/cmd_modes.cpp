@@ -42,8 +42,8 @@ void modes(const ModesOptions& o) {
   ProgressLine progress(
       progress_mode(o.quiet),
       [&] { return fmt::format("static equilibrium, load {:.3g}", state.t); }, o.progress_every);
-  const SolverStats stats =
-      run_solver(m, state, settings, {}, [&](double fraction) { progress.update(fraction); });
+  const SolverStats stats = run_solver(
+      m, state, settings, {}, [&](const SolverProgress& p) { progress.update(p.fraction); });
   progress.finish();
   if (stats.status != "ok") {
     fmt::print(stderr, "finseg: error: {}: no static equilibrium: {}\n", o.scene, stats.message);

@@ -62,11 +62,35 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &sa, nullptr);
 }
 
-std::string where(const RunRecorder& rec) {
-  const double x = rec.last_abscissa();
+// `x` on the run's abscissa as text ("t = 0.42 s", "pull 12 mm", "load 0.5").
+std::string where(const RunRecorder& rec, double x) {
   if (rec.abscissa() == "t_s") return fmt::format("t = {:.4g} s", x);
   if (rec.abscissa() == "pull_displacement_m") return fmt::format("pull {:.4g} mm", 1e3 * x);
   return fmt::format("load {:.3g}", x);
+}
+
+// Where the last output is.
+std::string where(const RunRecorder& rec) {
+  return where(rec, rec.last_abscissa());
+}
+
+// Where the run is at `now` (a dynamic run may stop between outputs).
+std::string where(const RunRecorder& rec, const State& now) {
+  return where(rec, rec.abscissa() == "t_s" ? now.t : rec.last_abscissa());
+}
+
+// The progress line: where the run is and, for the dynamic solvers, its step and counts (a
+// large model may take minutes from one output to the next).
+std::string progress_text(const RunRecorder& rec, const SolverProgress& p) {
+  if (p.stats == nullptr || rec.abscissa() != "t_s") {
+    return fmt::format("{}, {} outputs", where(rec), rec.outputs());
+  }
+  std::string s = fmt::format("t = {:.4g} s, step {:.2g} s, {} steps", p.t, p.step, p.stats->steps);
+  if (p.stats->rejected_steps > 0) s += fmt::format(" ({} rejected)", p.stats->rejected_steps);
+  if (p.stats->newton_iterations > 0) {
+    s += fmt::format(", {} Newton iterations", p.stats->newton_iterations);
+  }
+  return s + fmt::format(", {} outputs", rec.outputs());
 }
 
 void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStats& stats,
@@ -172,10 +196,13 @@ class Checkpointer {
   bool warned_ = false;
 };
 
-[[noreturn]] void stop_interrupted(const RunOptions& o, const RunRecorder& rec) {
+[[noreturn]] void stop_interrupted(const RunOptions& o, const RunRecorder& rec, const State& now) {
   const int sig = g_signal;
-  fmt::print(stderr, "finseg: interrupted by {}: kept the {} outputs recorded ({} to {})\n",
-             sig == SIGTERM ? "SIGTERM" : "SIGINT", rec.outputs(), where(rec), o.out);
+  fmt::print(stderr,
+             "finseg: interrupted by {} at {}: kept the {} outputs recorded ({} to {}) and the "
+             "state there in {}\n",
+             sig == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, now), rec.outputs(), where(rec),
+             o.out, kCheckpointFile);
   fmt::print(stderr, "finseg: continue with: finseg run {} --out {} --resume\n", o.scene, o.out);
   throw ExitStatus{sig == SIGTERM ? 143 : 130};
 }
@@ -208,9 +235,9 @@ void run_scene(const RunOptions& o) {
   fs::remove(fs::path(o.out) / "summary.json");
   clear_stop_request();
   install_stop_handlers();
+  SolverProgress now;
   ProgressLine progress(
-      progress_mode(o.quiet),
-      [&] { return fmt::format("{}, {} outputs", where(rec), rec.outputs()); }, o.progress_every);
+      progress_mode(o.quiet), [&] { return progress_text(rec, now); }, o.progress_every);
   Checkpointer checkpoints(o, scene, hash);
   bool skip = o.resume;  // a resumed run's first output is the checkpoint's last one
   SolverStats stats = run_solver(
@@ -219,14 +246,20 @@ void run_scene(const RunOptions& o) {
         if (!std::exchange(skip, false)) rec.record(s, f);
         checkpoints.at_output(s, rec);
       },
-      [&](double fraction) { progress.update(fraction); });
+      [&](const SolverProgress& p) {
+        now = p;
+        progress.update(p.fraction);
+      });
+  now.stats = nullptr;  // the counts lived in run_solver
   progress.finish();
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
-  if (stats.status == "ok") checkpoints.write(state, rec);  // the final state (docs/state-file.md)
-  if (stats.status == kInterruptedStatus) {
+  const bool interrupted = stats.status == kInterruptedStatus;
+  // The final state, or where the run stopped (maybe between outputs; docs/state-file.md).
+  if (stats.status == "ok" || interrupted) checkpoints.write(state, rec);
+  if (interrupted) {
     stats.message = fmt::format("interrupted by {} at {}; continue with --resume",
-                                g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec));
+                                g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, state));
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const std::size_t frames = rec.frames().size();
@@ -239,7 +272,7 @@ void run_scene(const RunOptions& o) {
   if (fs::exists(fs::path(o.out) / kCheckpointFile)) report.files.push_back(kCheckpointFile);
   write_manifest(o.out, report.files);
   for (const std::string& w : report.warnings) fmt::print(stderr, "finseg: warning: {}\n", w);
-  if (stats.status == kInterruptedStatus) stop_interrupted(o, rec);
+  if (interrupted) stop_interrupted(o, rec, state);
   if (stats.status != "ok") {
     fmt::print(stderr, "finseg: error: {}: the simulation diverged: {}\n", o.scene, stats.message);
     fmt::print(stderr, "finseg: kept the {} outputs recorded before ({} to {})\n", rec.outputs(),

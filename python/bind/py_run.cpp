@@ -124,13 +124,13 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
   ro.frames = ro.frames && out.has_value();
   RunRecorder rec(scene.model, scene.solver, ro);
   // Ctrl-C: Python's handler only sets a flag; it is looked at here, between steps, and
-  // stops the run at its next output as SIGINT stops `finseg run`.
+  // stops the run at its next step as SIGINT stops `finseg run`.
   bool interrupted = false;
   clear_stop_request();
   SolverStats stats = run_solver(
       scene.model, state, scene.solver,
       [&](const State& s, const BodyForces& f) { rec.record(s, f); },
-      [&](double) {
+      [&](const SolverProgress&) {
         if (!interrupted && PyErr_CheckSignals() != 0) {
           PyErr_Clear();
           interrupted = true;

@@ -10,6 +10,7 @@
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/step_limits.hpp"
+#include "solvers/stop_request.hpp"
 
 namespace finseg {
 namespace {
@@ -116,13 +117,18 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
     }
     commit_history(model, state);
     ++stats.steps;
-    if (state.t >= next_output - 1e-9 * h || n == total) {
-      next_output += every;
+    const bool at_output = state.t >= next_output - 1e-9 * h || n == total;
+    if (at_output) next_output += every;
+    if (at_output) {
       remember(state, f, h, next_output, t0, n);
       on_output(state, f);
       forget(state);
-      on_progress((state.t - t0) / (settings.t_end - t0));  // of the whole run
     }
+    if (stop_requested()) {  // ends the run at this step, with what continuing it needs
+      remember(state, f, h, next_output, t0, n);
+      throw StopRequested{state.t};
+    }
+    on_progress({(state.t - t0) / (settings.t_end - t0), state.t, h, &stats});
   }
 }
 

@@ -10,6 +10,7 @@
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
 #include "solvers/step_limits.hpp"
+#include "solvers/stop_request.hpp"
 #include "solvers/time_stepper.hpp"
 
 namespace finseg {
@@ -110,13 +111,19 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     after_rejection = false;
     // A step shortened only to land on an output time says nothing about the next one.
     h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
-    if (state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every) {
-      next_output += every;
-      stepper->forget_newton_matrix();  // a run resumed from this output starts without one
+    const bool at_output =
+        state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every;
+    if (at_output) next_output += every;
+    // A stop request ends the run here, not at the next output, which may be hours away on a
+    // large model; the run continued from here keeps the output times.
+    const bool stop = stop_requested();
+    if (at_output || stop) {
+      stepper->forget_newton_matrix();  // a run continued from here starts without one
       state.solver = memory();
-      on_output(state, f);
-      on_progress((state.t - t0) / (settings.t_end - t0));
     }
+    if (at_output) on_output(state, f);
+    if (stop) throw StopRequested{state.t};
+    on_progress({(state.t - t0) / (settings.t_end - t0), state.t, h_try, &stats});
   }
 }
 

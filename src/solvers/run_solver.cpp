@@ -15,11 +15,6 @@ namespace {
 std::atomic<bool> g_stop{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-// Unwinds a solver from an output point once a stop was requested.
-struct StopAtOutput {
-  double t;
-};
-
 }  // namespace
 
 void request_stop() noexcept {
@@ -47,9 +42,9 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
   // the caller has recorded the output, so nothing recorded is lost.
   const OutputCallback out = [&on_output](const State& s, const BodyForces& f) {
     if (on_output) on_output(s, f);
-    if (stop_requested()) throw StopAtOutput{s.t};
+    if (stop_requested()) throw StopRequested{s.t};
   };
-  const ProgressCallback prog = on_progress ? on_progress : [](double) {};
+  const ProgressCallback prog = on_progress ? on_progress : [](const SolverProgress&) {};
   try {
     switch (settings.kind) {
       case SolverKind::Explicit:
@@ -65,9 +60,9 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
   } catch (const DivergenceError& e) {
     stats.status = "diverged";
     stats.message = e.what();
-  } catch (const StopAtOutput& stop) {
+  } catch (const StopRequested& stop) {
     stats.status = kInterruptedStatus;
-    stats.message = fmt::format("stopped on request at the output t = {:.6g}", stop.t);
+    stats.message = fmt::format("stopped on request at t = {:.6g}", stop.t);
   }
   stats.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

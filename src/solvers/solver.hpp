@@ -57,10 +57,18 @@ struct SolverStats {
   std::string message;        ///< diagnosis when diverged
 };
 
-/// Called at t = 0, at each output time and at the end, with the forces at that state.
+/// Called at t = 0, at each output time and at the end, with the forces at that state; also
+/// at the step where a stop request ends a run between outputs (stop_request.hpp).
 using OutputCallback = std::function<void(const State&, const BodyForces&)>;
-/// Called now and then with the fraction of the run done (0..1).
-using ProgressCallback = std::function<void(double)>;
+/// Where a running solver is, for progress displays.
+struct SolverProgress {
+  double fraction = 0;                 ///< of the run done, 0..1
+  double t = 0;                        ///< simulated time, s (static: the load or drive parameter)
+  double step = 0;                     ///< the last accepted step, s (0 where there is none)
+  const SolverStats* stats = nullptr;  ///< the counts so far
+};
+/// Called after every accepted step (dynamic solvers) or equilibrium (static).
+using ProgressCallback = std::function<void(const SolverProgress&)>;
 
 /// Runs the chosen solver from `state` to the end. A divergence is reported in the
 /// returned stats (status "diverged", message names time, element and quantity) and

@@ -421,7 +421,7 @@ void drive_path(const Model& model, State& state, const SolverSettings& settings
     ++stats.steps;
     state.solver = path_memory(state, k, ds);
     on_output(state, f);
-    on_progress(static_cast<double>(k) / n);
+    on_progress({static_cast<double>(k) / n, state.t, s_to - s_from, &stats});
   }
 }
 
@@ -459,14 +459,14 @@ void run_static(const Model& model, State& state, const SolverSettings& settings
       [&](State& s, double x) {
         s.load_scale = x;
         s.t = x;
-        if (!path && x < lambda_end) on_progress(x / lambda_end);  // long load-only solves
+        if (!path && x < lambda_end) on_progress({x / lambda_end, x, 0, &stats});  // long solves
       },
       "load scale", f, stats, false);
   commit_history(model, state);
   ++stats.steps;
   if (!path) {
     on_output(state, f);
-    on_progress(1.0);
+    on_progress({1.0, state.t, 0, &stats});
     return;
   }
   state.t = 0;
