@@ -98,6 +98,11 @@ TEST(ContactPairsOutput, PlateOnGroundCarriesItsWeightAndLoad) {
     EXPECT_EQ(r[2], "plate");
     EXPECT_GT(std::stod(r[3]), 0);
   }
+  // The probe's own table counts the same touching pair at every output.
+  const auto totals = csv_cells(slurp(dir / "out/touch.csv"), &header);
+  ASSERT_EQ(header.substr(header.rfind(',') + 1), "touching_pairs");
+  ASSERT_EQ(totals.size(), rows.size());
+  for (const auto& r : totals) EXPECT_EQ(r.back(), "1");
   const auto& last = rows.back();
   ASSERT_EQ(std::stod(last[0]), 1.0);  // full load
   const double weight_and_load = m * kG + P;

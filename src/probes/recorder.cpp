@@ -1,5 +1,6 @@
 #include "probes/recorder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -72,7 +73,12 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
     case ProbeKind::Contact:
       break;
   }
-  return {x, "active_points", "normal_force_N", "friction_force_N", "max_penetration_m"};
+  return {x,
+          "active_points",
+          "normal_force_N",
+          "friction_force_N",
+          "max_penetration_m",
+          "touching_pairs"};
 }
 
 // Crease probe: mean fold and opening angle over the crease's elements (they differ only
@@ -183,8 +189,14 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
     case ProbeKind::Contact:
       break;
   }
-  return {x, static_cast<double>(contact->active), contact->total_normal_force,
-          contact->total_friction_force, contact->max_penetration};
+  const auto touching = std::count_if(contact->pairs.begin(), contact->pairs.end(),
+                                      [](const ContactPairForce& p) { return p.points > 0; });
+  return {x,
+          static_cast<double>(contact->active),
+          contact->total_normal_force,
+          contact->total_friction_force,
+          contact->max_penetration,
+          static_cast<double>(touching)};
 }
 
 void RunRecorder::record(const State& state, const BodyForces& forces) {
