@@ -83,6 +83,21 @@ inline CliResult run_finseg(const TempDir& dir, const std::string& args,
   return r;
 }
 
+/// Runs a shipped example as a user would: copies `scene` and `files` (its FOLD pattern, data)
+/// from examples/`folder`/ into `dir` and runs `finseg run SCENE --out run --quiet` there with
+/// VTK, HTML and plot off, plus `extra` arguments (e.g. "--set solver.t_end=0.1").
+inline CliResult run_example(const TempDir& dir, const std::string& folder,
+                             const std::string& scene, const std::vector<std::string>& files,
+                             const std::string& extra = "") {
+  const std::string from = std::string(FINSEG_SOURCE_DIR) + "/examples/" + folder + "/";
+  std::filesystem::copy_file(from + scene, dir / scene);
+  for (const std::string& f : files) std::filesystem::copy_file(from + f, dir / f);
+  return run_finseg(dir, "run " + scene +
+                             " --out run --quiet --set outputs.vtk=false --set outputs.html=false "
+                             "--set outputs.plot=false " +
+                             extra);
+}
+
 /// Expects `finseg ARGS` run in `dir` to refuse with exit code 2 and a message containing
 /// `named` (the option or field the refusal must name).
 inline void expect_refused(const TempDir& dir, const std::string& args, const std::string& named) {

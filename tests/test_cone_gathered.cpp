@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -199,14 +198,7 @@ TEST(ConeGathered, ExampleScenesStartApartWithTheRulesContactStiffness) {
 TEST(ConeGathered, ExamplePullRunsWithContactOnAndPenetrationBelowAQuarterThickness) {
   // examples/cone/gathered.yaml as shipped (1 s of implicit pull; 3.6 s wall in Release).
   test::TempDir dir;
-  const std::string cone = std::string(FINSEG_SOURCE_DIR) + "/examples/cone/";
-  for (const char* f : {"gathered.yaml", "gathered.fold"}) {
-    std::filesystem::copy_file(cone + f, dir / f);
-  }
-  const auto r = test::run_finseg(
-      dir,
-      "run gathered.yaml --out run --quiet --set outputs.vtk=false --set outputs.html=false "
-      "--set outputs.plot=false");
+  const auto r = test::run_example(dir, "cone", "gathered.yaml", {"gathered.fold"});
   ASSERT_EQ(r.code, 0) << r.err;
   std::string header;
   const auto rows = test::csv_rows(test::slurp(dir / "run/contact.csv"), &header);

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <string>
 
 #include "cli_test_util.hpp"
@@ -19,14 +18,9 @@ namespace cone_stowed_test {
 
 TEST(ConeStowed, ExamplePullStartsWithContactOnAndNoForceFromTheStacksOverlap) {
   test::TempDir dir;
-  const std::string cone = std::string(FINSEG_SOURCE_DIR) + "/examples/cone/";
-  for (const char* f : {"stowed.yaml", "stowed.fold"})
-    std::filesystem::copy_file(cone + f, dir / f);
   // The first 0.1 s of the pull (16 mm of the gauge's 160 mm).
-  const auto r = test::run_finseg(
-      dir,
-      "run stowed.yaml --out run --quiet --set solver.t_end=0.1 --set outputs.vtk=false --set "
-      "outputs.html=false --set outputs.plot=false");
+  const auto r =
+      test::run_example(dir, "cone", "stowed.yaml", {"stowed.fold"}, "--set solver.t_end=0.1");
   ASSERT_EQ(r.code, 0) << r.err;
   std::string header;
   const auto rows = test::csv_rows(test::slurp(dir / "run/contact.csv"), &header);
