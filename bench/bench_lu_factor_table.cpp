@@ -6,12 +6,16 @@
 // repeats for the factorization), relative residual |b - A x| / |b| for b_k = cos(0.1 k).
 // Matrices: Matrix Market files (e.g. Newton matrices written from a run) or, for a number n,
 // the twisted n x n sheet of bench_sheet_factor_table (static stiffness out of equilibrium).
+// --orderings: UMFPACK's symmetric strategy only, with its AMD, METIS, CHOLMOD and BEST orderings,
+// each solved with 2, 1 and 0 refinement steps, and CHOLMOD on the symmetric part with AMD and
+// METIS, solved with 1 and 0 refinement steps (issue 11 item 7, 2026-11-28).
 // Usage: bench_lu_factor_table [--repeat R] [--sparselu-max-dofs N] [--klu-max-dofs N]
-//        (FILE.mtx | n)...
+//        [--orderings] (FILE.mtx | n)...
 #include <fmt/format.h>
 #include <klu.h>
 #include <umfpack.h>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
@@ -19,6 +23,7 @@
 #include <ctime>
 #include <string>
 #include <unsupported/Eigen/SparseExtra>
+#include <utility>
 #include <vector>
 
 #include "elements/assemble.hpp"
@@ -82,14 +87,33 @@ Row sparselu_row(const SpMat& A, const Eigen::VectorXd& b, int repeat) {
   return r;
 }
 
+const char* ordering_name(double ordering) {
+  switch (static_cast<int>(ordering)) {
+    case UMFPACK_ORDERING_AMD:
+      return "AMD";
+    case UMFPACK_ORDERING_METIS:
+      return "METIS";
+    case UMFPACK_ORDERING_CHOLMOD:
+      return "CHOLMOD (AMD, METIS if AMD fills much)";
+    case UMFPACK_ORDERING_BEST:
+      return "best of AMD, METIS, CHOLMOD";
+    default:
+      return "other";
+  }
+}
+
 // UMFPACK with `strategy` (UMFPACK_STRATEGY_AUTO: its default, which looks at the pattern).
-// `sym_tol`: the symmetric strategy's diagonal pivot tolerance (UMFPACK's default 0.001).
-Row umfpack_row(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strategy,
-                double sym_tol = 0.001) {
+// `sym_tol`: the symmetric strategy's diagonal pivot tolerance (UMFPACK's default 0.001);
+// `ordering`: UMFPACK_ORDERING_*; one row per entry of `irsteps`, the refinement steps in the
+// solve (UMFPACK's default 2), all on the same factorization.
+std::vector<Row> umfpack_rows(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strategy,
+                              double sym_tol, int ordering, const std::vector<int>& irsteps) {
+  std::vector<Row> rows;
   double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
   umfpack_di_defaults(control);
   control[UMFPACK_STRATEGY] = strategy;
   control[UMFPACK_SYM_PIVOT_TOLERANCE] = sym_tol;
+  control[UMFPACK_ORDERING] = ordering;
   void *symbolic = nullptr, *numeric = nullptr;
   const int n = static_cast<int>(A.rows());
   const int *Ap = A.outerIndexPtr(), *Ai = A.innerIndexPtr();
@@ -98,33 +122,72 @@ Row umfpack_row(const SpMat& A, const Eigen::VectorXd& b, int repeat, int strate
   auto t = Clock::now();
   umfpack_di_symbolic(n, n, Ap, Ai, nullptr, &symbolic, control, info);
   r.analyse = since(t);
+  const std::string ordering_used = ordering_name(info[UMFPACK_ORDERING_USED]);
   int status = 0;
   r.factor = least_of(repeat, [&] {
     if (numeric != nullptr) umfpack_di_free_numeric(&numeric);
     status = umfpack_di_numeric(Ap, Ai, Ax, symbolic, &numeric, control, info);
   });
   if (status != UMFPACK_OK) {
-    r = {"UMFPACK", NAN, NAN, NAN, NAN, NAN, fmt::format("status {}", status)};
-  } else {
-    r.fill = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
-    const char* used = info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
-                           ? "symmetric strategy (AMD on A + A^T)"
-                           : "unsymmetric strategy (COLAMD)";
-    r.note = fmt::format("{}{}, pivot tolerance {}, {:.3g} flops; pattern symmetry {:.2f}", used,
-                         control[UMFPACK_STRATEGY] == UMFPACK_STRATEGY_AUTO ? " (auto)" : "",
-                         info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
-                             ? sym_tol
-                             : control[UMFPACK_PIVOT_TOLERANCE],
-                         info[UMFPACK_FLOPS], info[UMFPACK_PATTERN_SYMMETRY]);
+    rows.push_back({"UMFPACK", NAN, NAN, NAN, NAN, NAN, fmt::format("status {}", status)});
+  }
+  r.fill = info[UMFPACK_LNZ] + info[UMFPACK_UNZ];
+  const char* used = info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
+                         ? "symmetric strategy"
+                         : "unsymmetric strategy";
+  const double flops = info[UMFPACK_FLOPS], pattern_symmetry = info[UMFPACK_PATTERN_SYMMETRY];
+  const double pivot_tolerance = info[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC
+                                     ? sym_tol
+                                     : control[UMFPACK_PIVOT_TOLERANCE];
+  for (const int irstep : status == UMFPACK_OK ? irsteps : std::vector<int>{}) {
+    control[UMFPACK_IRSTEP] = irstep;
+    r.note = fmt::format(
+        "{}{}, {} ordering, irstep {}, pivot tolerance {}, {:.3g} flops; pattern symmetry {:.2f}",
+        used, control[UMFPACK_STRATEGY] == UMFPACK_STRATEGY_AUTO ? " (auto)" : "", ordering_used,
+        irstep, pivot_tolerance, flops, pattern_symmetry);
     Eigen::VectorXd x(n);
-    t = Clock::now();
-    umfpack_di_solve(UMFPACK_A, Ap, Ai, Ax, x.data(), b.data(), numeric, control, info);
-    r.solve = since(t);
+    r.solve = least_of(repeat, [&] {
+      umfpack_di_solve(UMFPACK_A, Ap, Ai, Ax, x.data(), b.data(), numeric, control, info);
+    });
     r.residual = relative_residual(A, x, b);
+    rows.push_back(r);
   }
   umfpack_di_free_numeric(&numeric);
   umfpack_di_free_symbolic(&symbolic);
-  return r;
+  return rows;
+}
+
+// CHOLMOD (Eigen's wrapper, as sparse_solve uses it) on the symmetric part S of A with the
+// given ordering (CHOLMOD_AMD or CHOLMOD_METIS, nmethods 1): fill nnz(L), analyse and factor
+// CPU, then the solve of S x = b unrefined and refined once against S.
+std::vector<Row> cholmod_rows(const SpMat& A, const Eigen::VectorXd& b, int repeat, int ordering) {
+  const SpMat S = symmetric_part(A);
+  Eigen::CholmodDecomposition<SpMat, Eigen::Lower> f;
+  f.cholmod().print = 0;
+  f.cholmod().nmethods = 1;
+  f.cholmod().method[0].ordering = ordering;
+  f.cholmod().postorder = 1;
+  const std::string name = ordering == CHOLMOD_METIS ? "METIS" : "AMD";
+  Row r{"CHOLMOD", NAN, 0, 0, 0, 0, ""};
+  auto t = Clock::now();
+  f.analyzePattern(S);
+  r.analyse = since(t);
+  r.factor = least_of(repeat, [&] { f.factorize(S); });
+  if (f.info() != Eigen::Success) return {{"CHOLMOD", NAN, NAN, NAN, NAN, NAN, "failed"}};
+  r.fill = static_cast<double>(f.cholmod().lnz);
+  std::vector<Row> rows;
+  for (const int steps : {1, 0}) {
+    Eigen::VectorXd x;
+    r.solve = least_of(repeat, [&] {
+      x = f.solve(b);
+      for (int k = 0; k < steps; ++k) x += f.solve(b - S * x);
+    });
+    r.residual = relative_residual(S, x, b);
+    r.note =
+        fmt::format("symmetric part, {} ordering, {} refinement step(s) against it", name, steps);
+    rows.push_back(r);
+  }
+  return rows;
 }
 
 Row klu_row(const SpMat& A, const Eigen::VectorXd& b, int repeat) {
@@ -189,6 +252,7 @@ SpMat twisted_sheet(int n) {
 int main(int argc, char** argv) {
   int repeat = 3;
   long sparselu_max_dofs = 70000, klu_max_dofs = 70000;
+  bool orderings = false;  // UMFPACK symmetric only: AMD / METIS / CHOLMOD, irstep 0 / 1 / 2
   std::vector<std::string> inputs;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -196,6 +260,8 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     } else if (a == "--sparselu-max-dofs" && i + 1 < argc) {
       sparselu_max_dofs = std::atol(argv[++i]);
+    } else if (a == "--orderings") {
+      orderings = true;
     } else if (a == "--klu-max-dofs" && i + 1 < argc) {
       klu_max_dofs = std::atol(argv[++i]);
     } else {
@@ -224,18 +290,36 @@ int main(int argc, char** argv) {
         file ? input.substr(input.find_last_of('/') + 1) : "twisted sheet n=" + input;
     const double asym = asymmetry_ratio(A);
     std::vector<Row> rows;
-    if (A.rows() <= sparselu_max_dofs) {
+    if (orderings) {
+      for (const int ordering : {UMFPACK_ORDERING_AMD, UMFPACK_ORDERING_METIS,
+                                 UMFPACK_ORDERING_CHOLMOD, UMFPACK_ORDERING_BEST}) {
+        for (const Row& r :
+             umfpack_rows(A, b, repeat, UMFPACK_STRATEGY_SYMMETRIC, 0.001, ordering, {2, 1, 0})) {
+          rows.push_back(r);
+        }
+      }
+      for (const int ordering : {CHOLMOD_AMD, CHOLMOD_METIS}) {
+        for (const Row& r : cholmod_rows(A, b, repeat, ordering)) rows.push_back(r);
+      }
+    } else if (A.rows() <= sparselu_max_dofs) {
       rows.push_back(sparselu_row(A, b, repeat));
     } else {
       rows.push_back({"SparseLU", NAN, NAN, NAN, NAN, NAN, "skipped"});
     }
-    rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_AUTO));
-    rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_SYMMETRIC));
-    rows.push_back(umfpack_row(A, b, repeat, UMFPACK_STRATEGY_SYMMETRIC, 1.0));
-    if (A.rows() <= klu_max_dofs) {
-      rows.push_back(klu_row(A, b, repeat));
-    } else {
-      rows.push_back({"KLU", NAN, NAN, NAN, NAN, NAN, "skipped"});
+    if (!orderings) {
+      for (const auto& [strategy, sym_tol] : {std::pair{UMFPACK_STRATEGY_AUTO, 0.001},
+                                              {UMFPACK_STRATEGY_SYMMETRIC, 0.001},
+                                              {UMFPACK_STRATEGY_SYMMETRIC, 1.0}}) {
+        for (const Row& r :
+             umfpack_rows(A, b, repeat, strategy, sym_tol, UMFPACK_ORDERING_AMD, {2})) {
+          rows.push_back(r);
+        }
+      }
+      if (A.rows() <= klu_max_dofs) {
+        rows.push_back(klu_row(A, b, repeat));
+      } else {
+        rows.push_back({"KLU", NAN, NAN, NAN, NAN, NAN, "skipped"});
+      }
     }
     for (const Row& r : rows) {
       fmt::print(

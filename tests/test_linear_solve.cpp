@@ -298,7 +298,7 @@ TEST(LinearSolve, AlternatingPatternsKeepTheirAnalyses) {
   EXPECT_EQ(linear_solve_counters().factorizations, 6);
 }
 
-// From 20 000 rows on the analysis compares AMD with METIS (linear_solve.cpp): a 150 x 150 grid
+// From 10 000 rows on the analysis compares AMD with METIS (linear_solve.cpp): a 150 x 150 grid
 // (22 500 rows) is solved by its Cholesky to the classical bound.
 TEST(LinearSolve, LargeSystemWithComparedOrderingsSolves) {
   const int n = 150;
@@ -411,6 +411,57 @@ TEST(LinearSolve, LuAnalysisReuseGivesTheBitsOfAFreshAnalysis) {
   ASSERT_TRUE(sparse_solve(A2, Eigen::VectorXd(B.col(1)), x_ones));
   EXPECT_EQ(Eigen::VectorXd(X.col(0)), x_fresh);
   EXPECT_EQ(Eigen::VectorXd(X.col(1)), x_ones);
+}
+
+// From 10 000 rows on UMFPACK's analysis also tries METIS (UMFPACK_ORDERING_BEST): the zero-
+// diagonal convection-diffusion system of 101 x 101 cells (10 201 rows, every pivot off the
+// diagonal) is solved backward stably, as the dense LU of the small one above (normwise
+// backward error at round-off).
+TEST(LinearSolve, LuWithComparedOrderingsIsBackwardStable) {
+  const SpMat A = zero_diagonal_matrix(101);
+  const Eigen::VectorXd b = A * known_solution(static_cast<int>(A.rows()));
+  Eigen::VectorXd x;
+  LinearSolveInfo info;
+  ASSERT_TRUE(sparse_solve(A, b, x, &info));
+  EXPECT_EQ(info.path, LinearSolvePath::LU);
+  const double eps = std::numeric_limits<double>::epsilon();
+  EXPECT_LT((b - A * x).norm() / (A.norm() * x.norm() + b.norm()), 10 * eps);
+}
+
+// A kept factorization's later solves are unrefined (modified Newton corrects them), so they
+// carry the factorization's own backward error. Unsymmetric (UMFPACK): the convection-diffusion
+// matrix shifted by 0.5 is strictly diagonally dominant by columns, where Gaussian elimination
+// with diagonal pivots (the symmetric strategy's choice) grows entries by at most 2, and the
+// backward error is below 3 n eps x 2 (Higham, Accuracy and Stability, 9.3 and 9.5); the
+// solution then lies within cond x that of the dense LU's. Symmetric positive definite
+// (CHOLMOD): within the Cholesky bound of the exact solution (closed-form condition number).
+// The factoring solve gives sparse_solve's bits.
+TEST(LinearSolve, KeptFactorizationSolvesUnrefinedToTheClassicalBound) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  const SpMat A = grid_matrix(10, -0.5, 0.5);
+  const Eigen::MatrixXd Ad(A);
+  const Eigen::VectorXd b1 = A * known_solution(static_cast<int>(A.rows()));
+  const Eigen::VectorXd b2 = Eigen::VectorXd::LinSpaced(A.rows(), -1, 2);
+  KeptFactorization kept;
+  Eigen::MatrixXd X;
+  Eigen::VectorXd x, x_single;
+  ASSERT_TRUE(kept.factor_and_solve(A, Eigen::MatrixXd(b1), X));
+  ASSERT_TRUE(sparse_solve(A, b1, x_single));
+  EXPECT_EQ(Eigen::VectorXd(X.col(0)), x_single);
+  ASSERT_TRUE(kept.solve(b2, x));
+  const double backward_bound = 3 * double(A.rows()) * eps * 2;
+  EXPECT_LT(normwise_backward_error(Ad, x, b2), backward_bound);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Ad);
+  const double cond = svd.singularValues()(0) / svd.singularValues().tail(1)(0);
+  EXPECT_LT(relative_error(x, Ad.partialPivLu().solve(b2)), 4 * cond * backward_bound);
+
+  const int n = 40;  // 1 600 rows: supernodal L L^T
+  const SymmetricMatrix S = SymmetricMatrix::symmetric_part_of(grid_matrix(n, -0.5));
+  const Eigen::VectorXd x_true = known_solution(static_cast<int>(S.size()));
+  ASSERT_TRUE(kept.factor_and_solve(S, Eigen::MatrixXd(Eigen::VectorXd::Ones(S.size())), X));
+  ASSERT_TRUE(kept.solve(S.matrix() * x_true, x));
+  EXPECT_LT(relative_error(x, x_true),
+            std::sqrt(double(S.size())) * condition_number(n, -0.5) * kBackwardError);
 }
 
 }  // namespace linear_solve_test

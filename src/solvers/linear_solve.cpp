@@ -134,6 +134,15 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
   }
 };
 
+// From this many rows on, the analyses try both AMD and METIS (nested dissection) and keep
+// the better ordering (CHOLMOD: fewer flops; CHOLMOD's default tries METIS only where AMD
+// fills much; UMFPACK: UMFPACK_ORDERING_BEST). On the lab cone's Newton matrices METIS
+// factored 1.2-1.5x faster from 16 704 rows (2 800 segments) on, and on the 10^4-segment sheet
+// it needs 2.28e9 flops against AMD's 2.57e9; the analysis costs about twice AMD's, once per
+// pattern (BENCHMARKS.md). Below, as before: the tests' models (up to about 6 000 dofs) keep
+// their orderings, and their results their bits.
+constexpr Eigen::Index kCompareOrderings = 10000;
+
 // UMFPACK's LU (multifrontal, BLAS-3 on its frontal matrices) of one sparsity pattern: the
 // symbolic analysis (the fill-reducing ordering and the frontal matrices' sizes) kept, the
 // numeric factorization redone for each matrix. The analysis is given the pattern only (no
@@ -158,6 +167,8 @@ class Umfpack {
   bool analyse(const SpMat& A) {
     release();
     const int n = static_cast<int>(A.rows());
+    control_[UMFPACK_ORDERING] =
+        A.rows() >= kCompareOrderings ? UMFPACK_ORDERING_BEST : UMFPACK_ORDERING_AMD;
     analysed_ = umfpack_di_symbolic(n, n, A.outerIndexPtr(), A.innerIndexPtr(), nullptr, &symbolic_,
                                     control_, info_) == UMFPACK_OK;
     return analysed_;
@@ -171,12 +182,15 @@ class Umfpack {
                                           symbolic_, &numeric_, control_, info_);
     return status == UMFPACK_OK;
   }
-  // x = A^-1 b with the last factorization (of A), refined against A by UMFPACK (at most
-  // Control[UMFPACK_IRSTEP] = 2 steps, while they reduce the backward error).
-  bool solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  // x = A^-1 b with the last factorization (of A), refined against A by UMFPACK when `refine`
+  // (at most Control[UMFPACK_IRSTEP] = 2 steps, while they reduce the backward error).
+  bool solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool refine = true) {
     x.resize(b.size());
+    double control[UMFPACK_CONTROL];
+    std::copy(control_, control_ + UMFPACK_CONTROL, control);
+    if (!refine) control[UMFPACK_IRSTEP] = 0;
     return umfpack_di_solve(UMFPACK_A, A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), x.data(),
-                            b.data(), numeric_, control_, info_) == UMFPACK_OK &&
+                            b.data(), numeric_, control, info_) == UMFPACK_OK &&
            x.allFinite();
   }
 
@@ -206,13 +220,6 @@ struct SymmetricSlot {
   Cholmod ldlt{Eigen::CholmodLDLt};
   bool automatic_analysed = false, ldlt_analysed = false;
 };
-
-// From this many rows on, the analysis tries both AMD and METIS and keeps the ordering of
-// fewer flops (CHOLMOD's default tries METIS only where AMD fills much). On the 10^4-segment
-// sheet METIS needs 2.28e9 flops per factorization against AMD's 2.57e9; its analysis costs
-// about twice AMD's, negligible beside the factorizations it serves. Below, as before: the
-// tests' models (up to about 6 000 dofs) keep their orderings, and their results their bits.
-constexpr Eigen::Index kCompareOrderings = 20000;
 
 bool factor(Cholmod& f, bool& analysed, const SpMat& S) {
   const bool analyse = !analysed;
@@ -576,11 +583,13 @@ bool KeptFactorization::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) cons
       x.resize(0);
       return true;
     }
+    // Unrefined: the modified Newton iteration that asks corrects an inexact step anyway
+    // (its residual is exact), and the refinement cost 2-4x the triangular solves.
     if (k.used.cholmod != nullptr) {
-      int steps = 0;
-      return refined_solve(*k.used.cholmod, k.A, b, x, steps) < INFINITY;
+      x = k.used.cholmod->solve(b);
+      return x.allFinite();
     }
-    return k.used.umfpack != nullptr && k.used.umfpack->solve(k.A, b, x);
+    return k.used.umfpack != nullptr && k.used.umfpack->solve(k.A, b, x, false);
   });
 }
 

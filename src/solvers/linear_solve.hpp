@@ -101,8 +101,8 @@ CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b
 
 /// A factorization kept for further right-hand sides: factor once, solve many (the modified
 /// Newton iteration, docs/solvers.md). The factoring solve takes the path sparse_solve takes
-/// and gives its bits; later solves reuse that factor (refined against the same matrix on the
-/// symmetric path). Holds its own symbolic analyses, apart from sparse_solve's.
+/// and gives its bits; later solves reuse that factor without iterative refinement (the
+/// iteration that asks corrects an inexact step). Holds its own symbolic analyses.
 class KeptFactorization {
  public:
   KeptFactorization();
@@ -115,7 +115,8 @@ class KeptFactorization {
                         Eigen::MatrixXd& X);
   /// Solves S X = B as sparse_solve(S, b, x) does for each column and keeps the factor.
   bool factor_and_solve(const SymmetricMatrix& S, const Eigen::MatrixXd& B, Eigen::MatrixXd& X);
-  /// x = A^-1 b with the kept factor; false if none is kept or x is not finite.
+  /// x = A^-1 b with the kept factor, unrefined (on the symmetric path: the factor of the
+  /// symmetric part); false if none is kept or x is not finite.
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   bool valid() const;
   /// Forgets the factor (the analyses stay).
