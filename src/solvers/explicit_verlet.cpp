@@ -118,8 +118,8 @@ void run_explicit(const Model& model, State& state, const SolverSettings& settin
     commit_history(model, state);
     ++stats.steps;
     const bool at_output = state.t >= next_output - 1e-9 * h || n == total;
-    if (at_output) next_output += every;
     if (at_output) {
+      next_output += every;
       remember(state, f, h, next_output, t0, n);
       on_output(state, f);
       forget(state);

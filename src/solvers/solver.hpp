@@ -57,8 +57,8 @@ struct SolverStats {
   std::string message;        ///< diagnosis when diverged
 };
 
-/// Called at t = 0, at each output time and at the end, with the forces at that state; also
-/// at the step where a stop request ends a run between outputs (stop_request.hpp).
+/// Called at t = 0, at each output time and at the end, with the forces at that state (a stop
+/// request between outputs ends the run without one: stop_request.hpp).
 using OutputCallback = std::function<void(const State&, const BodyForces&)>;
 /// Where a running solver is, for progress displays.
 struct SolverProgress {
