@@ -61,6 +61,10 @@ inline std::vector<std::vector<double>> csv_rows(const std::string& text, std::s
   return rows;
 }
 
+/// Header of a contact probe's CSV (docs/scene.md, "Run outputs").
+inline constexpr const char* kContactProbeHeader =
+    "t_s,active_points,normal_force_N,friction_force_N,max_penetration_m,touching_pairs";
+
 /// Result of one finseg invocation.
 struct CliResult {
   int code = -1;

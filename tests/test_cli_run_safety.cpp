@@ -141,10 +141,12 @@ void replace_line(const std::string& path, const std::string& from, const std::s
 std::vector<double> final_state(const TempDir& dir, const std::string& out,
                                 bool velocities = true) {
   const auto j = nlohmann::json::parse(slurp(dir / (out + "/checkpoint.json")));
+  const std::vector<const char*> keys =
+      velocities ? std::vector<const char*>{"p_W_m", "R_WB", "v_W_m_s", "w_W_rad_s"}
+                 : std::vector<const char*>{"p_W_m", "R_WB"};
   std::vector<double> x{j["t"].get<double>()};
   for (const auto& b : j["bodies"]) {
-    for (const char* k : {"p_W_m", "R_WB", "v_W_m_s", "w_W_rad_s"}) {
-      if (!velocities && k[0] != 'p' && k[0] != 'R') continue;
+    for (const char* k : keys) {
       for (const auto& v : b[k]) x.push_back(v.get<double>());
     }
   }

@@ -202,8 +202,7 @@ TEST(ConeGathered, ExamplePullRunsWithContactOnAndPenetrationBelowAQuarterThickn
   ASSERT_EQ(r.code, 0) << r.err;
   std::string header;
   const auto rows = test::csv_rows(test::slurp(dir / "run/contact.csv"), &header);
-  ASSERT_EQ(header,
-            "t_s,active_points,normal_force_N,friction_force_N,max_penetration_m,touching_pairs");
+  ASSERT_EQ(header, test::kContactProbeHeader);
   ASSERT_GT(rows.size(), 50u);
   EXPECT_NEAR(rows.back()[0], 1.0, 1e-9);  // the whole pull
   int touching = 0;

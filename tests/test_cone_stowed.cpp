@@ -24,8 +24,7 @@ TEST(ConeStowed, ExamplePullStartsWithContactOnAndNoForceFromTheStacksOverlap) {
   ASSERT_EQ(r.code, 0) << r.err;
   std::string header;
   const auto rows = test::csv_rows(test::slurp(dir / "run/contact.csv"), &header);
-  ASSERT_EQ(header,
-            "t_s,active_points,normal_force_N,friction_force_N,max_penetration_m,touching_pairs");
+  ASSERT_EQ(header, test::kContactProbeHeader);
   ASSERT_GE(rows.size(), 10u);
   EXPECT_NEAR(rows.back()[0], 0.1, 1e-9);
   EXPECT_EQ(rows.front()[1], 0);  // overlapping everywhere, pushing nowhere

@@ -85,7 +85,8 @@ std::string progress_text(const RunRecorder& rec, const SolverProgress& p) {
   if (p.stats == nullptr || rec.abscissa() != "t_s") {
     return fmt::format("{}, {} outputs", where(rec), rec.outputs());
   }
-  std::string s = fmt::format("t = {:.4g} s, step {:.2g} s, {} steps", p.t, p.step, p.stats->steps);
+  std::string s =
+      fmt::format("{}, step {:.2g} s, {} steps", where(rec, p.t), p.step, p.stats->steps);
   if (p.stats->rejected_steps > 0) s += fmt::format(" ({} rejected)", p.stats->rejected_steps);
   if (p.stats->newton_iterations > 0) {
     s += fmt::format(", {} Newton iterations", p.stats->newton_iterations);
