@@ -6,10 +6,12 @@
 
 #include <cmath>
 
+#include "collision/contact_laws.hpp"
 #include "contact_test_util.hpp"
 #include "generators/cantilever.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/implicit_newton.hpp"
+#include "solvers/linear_solve.hpp"
 #include "validation_cantilever.hpp"
 
 namespace finseg {
@@ -103,6 +105,63 @@ TEST(ModifiedNewton, MatrixOfFreeFlightIsRenewedWhenContactSwitchesOn) {
   ASSERT_TRUE(full.converged && kept.converged);
   ASSERT_LT(full.end.p_W[1].z(), kThick);  // in contact
   EXPECT_GE(kept.stats.factorizations, 1);
+  EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
+}
+
+// A kept matrix of a nonsymmetric model serves as the factor of its symmetric part (the
+// strip's damping makes the model nonsymmetric; its matrix is so up to the rotation
+// Jacobian's skew part) and still reaches full Newton's step; no LU is made.
+TEST(ModifiedNewton, SymmetricPartOfANearlySymmetricMatrixReachesFullNewtonsStep) {
+  const Model model = loaded_strip();
+  const double h = 1e-5, tol = 1e-12;
+  const State start = initial_state(model);
+  const Step full1 = backward_euler(model, start, h, tol, nullptr);
+  ASSERT_TRUE(full1.converged);
+  const State& moving = full1.end;  // loaded and moving: the skew part is not zero
+  const Step full = backward_euler(model, moving, h, tol, nullptr);
+  ASSERT_TRUE(full.converged);
+  for (const double allowed : {0.0, 1e-3}) {
+    NewtonReuse reuse;
+    reuse.max_age = 20;
+    reuse.approximate_asymmetry = allowed;
+    const long lu_before = linear_solve_counters().lu_factorizations;
+    const Step kept = backward_euler(model, moving, h, tol, &reuse);
+    ASSERT_TRUE(kept.converged) << allowed;
+    EXPECT_EQ(reuse.approximate, allowed > 0);
+    EXPECT_EQ(linear_solve_counters().lu_factorizations > lu_before, allowed == 0);
+    EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol) << allowed;
+  }
+}
+
+// Where the symmetric part does not contract (a plate sliding on a plate: the friction
+// force's derivative along the normal has no transpose partner), the solve goes on with LU
+// and still reaches full Newton's step.
+TEST(ModifiedNewton, LuTakesOverWhereTheSymmetricPartStopsContracting) {
+  constexpr double kG = 9.81, kThick = 2e-4, m = 1e-3, h = 2e-3, tol = 1e-12;
+  Model mod;
+  mod.gravity_W = Vec3(0, 0, -kG);
+  mod.bodies.push_back(
+      test::plate("ground", 1, Vec3(0.4, 0.1, kThick), Vec3::Zero(), Mat3::Identity(), true));
+  mod.contact = test::continuous_contact(suggest_contact(m, kG, 1e-5), 0.3, 0.3);
+  const double delta0 = std::pow(m * kG / mod.contact.stiffness, 1 / mod.contact.exponent);
+  mod.bodies.push_back(
+      test::plate("block", m, Vec3(0.02, 0.02, kThick), Vec3(0, 0, kThick - delta0)));
+  mod.finalize_dofs();
+  State start = initial_state(mod);
+  start.v_W[1] = Vec3(0.05, 0, 0);
+  const Step full = backward_euler(mod, start, h, tol, nullptr);
+  ASSERT_TRUE(full.converged);
+  NewtonReuse reuse;
+  reuse.max_age = 20;
+  reuse.approximate_asymmetry = 1;  // every matrix's symmetric part is tried first
+  const long lu_before = linear_solve_counters().lu_factorizations;
+  const Step kept = backward_euler(mod, start, h, tol, &reuse);
+  ASSERT_TRUE(kept.converged);
+  // The symmetric part's factor, then LU's: not one symmetric part after another.
+  EXPECT_GE(kept.stats.factorizations, 2);
+  EXPECT_LE(kept.stats.factorizations, full.stats.factorizations + 1);
+  EXPECT_GT(linear_solve_counters().lu_factorizations, lu_before);
+  EXPECT_FALSE(reuse.approximate);
   EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
 }
 

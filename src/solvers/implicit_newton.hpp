@@ -33,8 +33,12 @@ struct NewtonReuse {
   KeptNewtonMatrix matrix;
   double s_cq = 0, s_cv = 0;  ///< the coefficients of dF/dq and dF/dv it was made with
   bool symmetric = false;     ///< made for the symmetric (Cholesky) path
-  int age = 0;                ///< iterations it has served
-  double eta = 1;             ///< theta / (1 - theta) of its last measured contraction rate theta
+  /// A nonsymmetric matrix up to this asymmetry ratio ||A - A^T||_F / ||A||_F is kept as the
+  /// factor of its symmetric part (docs/solvers.md, "Modified Newton"); 0: none.
+  double approximate_asymmetry = 1e-3;
+  bool approximate = false;  ///< the kept factor is of the symmetric part of a nonsymmetric matrix
+  int age = 0;               ///< iterations it has served
+  double eta = 1;            ///< theta / (1 - theta) of its last measured contraction rate theta
   /// Forgets the matrix and its history (a run resumed from here starts the same way).
   void reset() {
     matrix.clear();
