@@ -211,7 +211,9 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     const bool old = k.age >= k.max_age;
     lin.at(x_try, old);
     const double ratio = lin.r.allFinite() ? std::sqrt(lin.r.squaredNorm() / merit) : INFINITY;
-    exact_only = exact_only || (k.approximate && ratio > kTheta);
+    // (Its first kept step, at the point where it was made: an exact matrix contracts there
+    // quadratically, so a slow one is the symmetric part's fault; later ones may be staleness.)
+    exact_only = exact_only || (k.approximate && k.age == 2 && ratio > kTheta);
     if (ratio >= 1) {  // a kept matrix whose step does not lower |r| is renewed where it failed
       lin.at(x, true);
       renew = true;
