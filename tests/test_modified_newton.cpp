@@ -165,5 +165,31 @@ TEST(ModifiedNewton, LuTakesOverWhereTheSymmetricPartStopsContracting) {
   EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
 }
 
+// summary.json's `linear_solves` are the run's own: a second run of the same model counts
+// the same, and they hold the Newton matrices' factorizations.
+TEST(ModifiedNewton, RunCountsItsOwnSparseSolves) {
+  const Model model = loaded_strip();
+  SolverSettings set;
+  set.kind = SolverKind::Implicit;
+  set.t_end = 2e-4;
+  set.output_interval = set.t_end;
+  set.dt = set.dt_max = 1e-5;
+  const auto run = [&] {
+    State s = initial_state(model);
+    return run_solver(model, s, set, [](const State&, const BodyForces&) {});
+  };
+  const SolverStats first = run(), second = run();
+  ASSERT_EQ(first.status, "ok") << first.message;
+  EXPECT_GE(first.factorizations, 1);
+  EXPECT_GE(first.linear.factorizations, first.factorizations);
+  EXPECT_LE(first.linear.lu_factorizations, first.linear.factorizations);
+  EXPECT_GE(first.linear.analyses, 1);
+  EXPECT_GT(first.linear.factor_s, 0);
+  EXPECT_GE(first.linear.total_s, first.linear.factor_s);
+  EXPECT_EQ(second.linear.factorizations, first.linear.factorizations);
+  EXPECT_EQ(second.linear.lu_factorizations, first.linear.lu_factorizations);
+  EXPECT_EQ(second.linear.solves, first.linear.solves);
+}
+
 }  // namespace modified_newton_test
 }  // namespace finseg

@@ -385,6 +385,21 @@ LinearSolveCounters& linear_solve_counters() {
   return counters;
 }
 
+LinearSolveCounters operator-(const LinearSolveCounters& later,
+                              const LinearSolveCounters& earlier) {
+  LinearSolveCounters d;
+  d.solves = later.solves - earlier.solves;
+  d.analyses = later.analyses - earlier.analyses;
+  d.factorizations = later.factorizations - earlier.factorizations;
+  d.lu_factorizations = later.lu_factorizations - earlier.lu_factorizations;
+  d.indefinite = later.indefinite - earlier.indefinite;
+  d.refinements = later.refinements - earlier.refinements;
+  d.analyse_s = later.analyse_s - earlier.analyse_s;
+  d.factor_s = later.factor_s - earlier.factor_s;
+  d.total_s = later.total_s - earlier.total_s;
+  return d;
+}
+
 SpMat symmetric_part(const SpMat& A) {
   SpMat S = SpMat(A.transpose()) + A;  // pattern of A + A^T, kept even where values cancel
   S *= 0.5;

@@ -63,6 +63,9 @@ struct LinearSolveCounters {
   double total_s = 0;    ///< whole calls: also the checks, triangular solves and refinement
 };
 
+/// The work done between two readings of the counters (`later - earlier`).
+LinearSolveCounters operator-(const LinearSolveCounters& later, const LinearSolveCounters& earlier);
+
 /// This thread's counters; assign `{}` to reset.
 LinearSolveCounters& linear_solve_counters();
 

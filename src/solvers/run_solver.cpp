@@ -37,6 +37,7 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
                        const OutputCallback& on_output, const ProgressCallback& on_progress) {
   keep_freed_memory();  // from the library too: benchmarks, tests and the Python module
   SolverStats stats;
+  const LinearSolveCounters linear_before = linear_solve_counters();
   const auto start = std::chrono::steady_clock::now();
   // Every solver, present or future, stops at its outputs: the wrapper checks the flag after
   // the caller has recorded the output, so nothing recorded is lost.
@@ -66,6 +67,7 @@ SolverStats run_solver(const Model& model, State& state, const SolverSettings& s
   }
   stats.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.linear = linear_solve_counters() - linear_before;
   return stats;
 }
 

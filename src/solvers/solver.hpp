@@ -7,6 +7,7 @@
 #include "elements/assemble.hpp"
 #include "model/model.hpp"
 #include "model/state.hpp"
+#include "solvers/linear_solve.hpp"
 
 namespace finseg {
 
@@ -53,6 +54,8 @@ struct SolverStats {
   long settles = 0;         ///< static: limit points passed by pseudo-transient continuation
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;
+  /// The run's sparse solves (analyses, Cholesky and LU factorizations and their seconds).
+  LinearSolveCounters linear;
   std::string status = "ok";  ///< "ok" or "diverged"
   std::string message;        ///< diagnosis when diverged
 };

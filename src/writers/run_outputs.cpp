@@ -42,6 +42,16 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"jacobian_max_age", s.jacobian_max_age}};
 }
 
+nlohmann::json linear_json(const LinearSolveCounters& c) {
+  return {{"calls", c.solves},
+          {"analyses", c.analyses},
+          {"factorizations", c.factorizations},
+          {"lu_factorizations", c.lu_factorizations},
+          {"analyse_s", c.analyse_s},
+          {"factor_s", c.factor_s},
+          {"total_s", c.total_s}};
+}
+
 nlohmann::json stats_json(const SolverStats& s) {
   return {{"steps", s.steps},
           {"rejected_steps", s.rejected_steps},
@@ -52,7 +62,8 @@ nlohmann::json stats_json(const SolverStats& s) {
           {"settles", s.settles},
           {"smallest_step_s", s.smallest_step},
           {"largest_step_s", s.largest_step},
-          {"solver_wall_s", s.wall_seconds}};
+          {"solver_wall_s", s.wall_seconds},
+          {"linear_solves", linear_json(s.linear)}};
 }
 
 int column(const ProbeTable& t, const std::string& name) {
