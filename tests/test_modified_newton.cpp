@@ -191,5 +191,23 @@ TEST(ModifiedNewton, RunCountsItsOwnSparseSolves) {
   EXPECT_EQ(second.linear.solves, first.linear.solves);
 }
 
+// A step whose Newton iteration fails is rejected and counted as such (summary.json's
+// `newton_failures`): two iterations cannot solve the loaded strip's first step of 1 ms
+// from rest (the tip swings through many times the pose tolerance), so the driver cuts it.
+TEST(ModifiedNewton, StepsWhoseNewtonFailsAreCountedApart) {
+  const Model model = loaded_strip();
+  SolverSettings set;
+  set.kind = SolverKind::Implicit;
+  set.t_end = 1e-3;
+  set.output_interval = set.t_end;
+  set.dt = set.dt_max = 1e-3;
+  set.max_iterations = 2;
+  State s = initial_state(model);
+  const SolverStats stats = run_solver(model, s, set, [](const State&, const BodyForces&) {});
+  ASSERT_EQ(stats.status, "ok") << stats.message;
+  EXPECT_GE(stats.newton_failures, 1);
+  EXPECT_LE(stats.newton_failures, stats.rejected_steps);
+}
+
 }  // namespace modified_newton_test
 }  // namespace finseg

@@ -88,6 +88,7 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     if (!r.converged || r.error > 1.0) {
       state = start;
       ++stats.rejected_steps;
+      if (!r.converged) ++stats.newton_failures;
       after_rejection = true;
       h = h_try * (r.converged ? std::max(0.2, 0.9 * std::pow(r.error, -root)) : 0.25);
       if (h < settings.dt_min) {

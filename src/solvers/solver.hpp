@@ -47,6 +47,7 @@ struct SolverSettings {
 struct SolverStats {
   long steps = 0;  ///< accepted steps or converged equilibria
   long rejected_steps = 0;
+  long newton_failures = 0;  ///< implicit: of the rejected steps, those whose Newton failed
   long newton_iterations = 0;
   long force_evaluations = 0;
   long jacobian_evaluations = 0;

@@ -55,6 +55,7 @@ nlohmann::json linear_json(const LinearSolveCounters& c) {
 nlohmann::json stats_json(const SolverStats& s) {
   return {{"steps", s.steps},
           {"rejected_steps", s.rejected_steps},
+          {"newton_failures", s.newton_failures},
           {"newton_iterations", s.newton_iterations},
           {"force_evaluations", s.force_evaluations},
           {"jacobian_evaluations", s.jacobian_evaluations},
