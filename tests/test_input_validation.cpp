@@ -218,6 +218,19 @@ TEST(SolverOptions, JacobianReuseKeysValidated) {
   EXPECT_EQ(scene.solver.jacobian_max_age, 5);
 }
 
+// Newton iterations per solve: each solver's own unless the scene names them (docs/scene.md).
+TEST(SolverOptions, NewtonIterationsPerSolverUnlessGiven) {
+  EXPECT_EQ(newton_iterations(parse_scene(kSheet, "s.yaml").solver), 50);
+  EXPECT_EQ(newton_iterations(
+                parse_scene(replaced(kSheet, "type: static", "type: implicit"), "s.yaml").solver),
+            10);
+  const Scene given = parse_scene(
+      replaced(kSheet, "type: static", "type: implicit\n  max_iterations: 30"), "s.yaml");
+  EXPECT_EQ(newton_iterations(given.solver), 30);
+  expect_refused(replaced(kSheet, "type: static", "type: implicit\n  max_iterations: 0"),
+                 "solver.max_iterations", "100000");
+}
+
 TEST(StepLimits, PullStepRefusedAtReadTime) {
   expect_refused(replaced(kZigzag, "fold_angle_deg: 80}", "fold_angle_deg: 80, pull_step: 1e-11}"),
                  "zigzag.pull_step", "at most 1e+09");

@@ -59,7 +59,7 @@ std::string solver_section(const SolverSettings& s) {
       "  max_iterations: {}\n"
       "  tolerance: {}   # static: residual relative to the load scale\n",
       solver_name(s.kind), num(s.t_end), num(s.output_interval), num(s.dt), s.load_steps,
-      s.max_iterations, num(s.tolerance));
+      newton_iterations(s), num(s.tolerance));
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ namespace {
 class GeneralizedAlpha final : public TimeStepper {
  public:
   GeneralizedAlpha(const SolverSettings& s, double tol)
-      : p_(chung_hulbert(s.rho_inf)), max_iterations_(s.max_iterations), tol_(tol) {
+      : p_(chung_hulbert(s.rho_inf)), max_iterations_(newton_iterations(s)), tol_(tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
   }
 

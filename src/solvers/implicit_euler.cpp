@@ -11,7 +11,7 @@ namespace {
 class BackwardEuler final : public TimeStepper {
  public:
   BackwardEuler(const SolverSettings& s, double tol)
-      : max_iterations_(s.max_iterations), tol_(tol) {
+      : max_iterations_(newton_iterations(s)), tol_(tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
   }
 

@@ -34,14 +34,23 @@ struct SolverSettings {
   /// numerical dissipation; 0.8 damps unresolved stiff modes by 20 % a step and keeps the
   /// damping ratio of resolved modes below 1e-3 at h omega = 0.2).
   double rho_inf = 0.8;
-  int load_steps = 1;       ///< static: initial number of load increments
-  int max_iterations = 50;  ///< static/implicit: Newton iterations per solve
+  int load_steps = 1;  ///< static: initial number of load increments
+  /// static/implicit: Newton iterations per solve; 0: the solver's own (newton_iterations())
+  int max_iterations = 0;
   double tolerance = 1e-9;  ///< static: residual tolerance relative to the load scale
   /// implicit: keep Newton's factored iteration matrix across iterations and steps while it
   /// contracts (modified Newton, docs/solvers.md); false: a new one every iteration.
   bool jacobian_reuse = true;
   int jacobian_max_age = 20;  ///< implicit: Newton iterations one kept matrix serves at most
 };
+
+/// Newton iterations per solve: `max_iterations`, else 10 for the implicit solver (a harder
+/// solve costs less as a step cut by 4 than as more iterations and matrices: BENCHMARKS.md,
+/// "Newton iterations per step") and 50 for the static one.
+inline int newton_iterations(const SolverSettings& s) {
+  if (s.max_iterations > 0) return s.max_iterations;
+  return s.kind == SolverKind::Implicit ? 10 : 50;
+}
 
 /// Counters and timing reported in summary.json.
 struct SolverStats {

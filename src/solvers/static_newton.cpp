@@ -142,7 +142,7 @@ bool solve_equilibrium(const Model& model, State& state, const SolverSettings& s
   double r_start = 0;
   double mu = 0;  // Levenberg-Marquardt shift of the last step
   const bool conservative = conservative_stiffness(model);
-  for (int it = 0; it < settings.max_iterations; ++it) {
+  for (int it = 0; it < newton_iterations(settings); ++it) {
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
     ++stats.jacobian_evaluations;
@@ -250,7 +250,7 @@ bool relaxation_step(const Model& model, State& state, const Eigen::SparseMatrix
   const double L = std::max(model.sheet.length, 1e-3);
   const Eigen::SparseMatrix<double> M_h = M / (h * h);
   moved = Eigen::VectorXd::Zero(model.num_dofs);
-  for (int it = 0; it < settings.max_iterations; ++it) {
+  for (int it = 0; it < newton_iterations(settings); ++it) {
     compute_forces(model, state, f, &jac);
     ++stats.force_evaluations;
     ++stats.jacobian_evaluations;
@@ -403,7 +403,7 @@ void drive_path(const Model& model, State& state, const SolverSettings& settings
   const DriveDef& d0 = model.drives[0];
   const long n = solver_step_count(d0.travel, d0.step, "static solver (drive path)");
   SolverSettings path_settings = settings;
-  path_settings.max_iterations = std::min(settings.max_iterations, kPathIterations);
+  path_settings.max_iterations = std::min(newton_iterations(settings), kPathIterations);
   for (long k = done + 1; k <= n; ++k) {
     const double s_from = state.drive_s[0];
     const double s_to = std::min(d0.travel, k * d0.step);

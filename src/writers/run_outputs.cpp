@@ -36,7 +36,7 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"scheme", scheme_name(s.scheme)},
           {"rho_inf", s.rho_inf},
           {"load_steps", s.load_steps},
-          {"max_iterations", s.max_iterations},
+          {"max_iterations", newton_iterations(s)},
           {"tolerance", s.tolerance},
           {"jacobian_reuse", s.jacobian_reuse},
           {"jacobian_max_age", s.jacobian_max_age}};
