@@ -165,20 +165,24 @@ TEST(ModifiedNewton, LuTakesOverWhereTheSymmetricPartStopsContracting) {
   EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
 }
 
-// summary.json's `linear_solves` are the run's own: a second run of the same model counts
-// the same, and they hold the Newton matrices' factorizations.
-TEST(ModifiedNewton, RunCountsItsOwnSparseSolves) {
+// The implicit solver's run of the loaded strip from rest to t_end with steps of dt (at
+// most), `max_iterations` Newton iterations per step (0: its own).
+SolverStats run_loaded_strip(double t_end, double dt, int max_iterations = 0) {
   const Model model = loaded_strip();
   SolverSettings set;
   set.kind = SolverKind::Implicit;
-  set.t_end = 2e-4;
-  set.output_interval = set.t_end;
-  set.dt = set.dt_max = 1e-5;
-  const auto run = [&] {
-    State s = initial_state(model);
-    return run_solver(model, s, set, [](const State&, const BodyForces&) {});
-  };
-  const SolverStats first = run(), second = run();
+  set.t_end = t_end;
+  set.output_interval = t_end;
+  set.dt = set.dt_max = dt;
+  set.max_iterations = max_iterations;
+  State s = initial_state(model);
+  return run_solver(model, s, set, [](const State&, const BodyForces&) {});
+}
+
+// summary.json's `linear_solves` are the run's own: a second run of the same model counts
+// the same, and they hold the Newton matrices' factorizations.
+TEST(ModifiedNewton, RunCountsItsOwnSparseSolves) {
+  const SolverStats first = run_loaded_strip(2e-4, 1e-5), second = run_loaded_strip(2e-4, 1e-5);
   ASSERT_EQ(first.status, "ok") << first.message;
   EXPECT_GE(first.factorizations, 1);
   EXPECT_GE(first.linear.factorizations, first.factorizations);
@@ -195,15 +199,7 @@ TEST(ModifiedNewton, RunCountsItsOwnSparseSolves) {
 // `newton_failures`): two iterations cannot solve the loaded strip's first step of 1 ms
 // from rest (the tip swings through many times the pose tolerance), so the driver cuts it.
 TEST(ModifiedNewton, StepsWhoseNewtonFailsAreCountedApart) {
-  const Model model = loaded_strip();
-  SolverSettings set;
-  set.kind = SolverKind::Implicit;
-  set.t_end = 1e-3;
-  set.output_interval = set.t_end;
-  set.dt = set.dt_max = 1e-3;
-  set.max_iterations = 2;
-  State s = initial_state(model);
-  const SolverStats stats = run_solver(model, s, set, [](const State&, const BodyForces&) {});
+  const SolverStats stats = run_loaded_strip(1e-3, 1e-3, 2);
   ASSERT_EQ(stats.status, "ok") << stats.message;
   EXPECT_GE(stats.newton_failures, 1);
   EXPECT_LE(stats.newton_failures, stats.rejected_steps);
