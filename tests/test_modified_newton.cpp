@@ -17,7 +17,7 @@
 namespace finseg {
 namespace modified_newton_test {
 
-// One backward-Euler step of h from `start` (as solvers/implicit_euler.cpp sets it up);
+// One backward-Euler step of h from `start`;
 // returns the end velocity, leaves the end state in `end`.
 struct Step {
   Eigen::VectorXd v;
@@ -28,19 +28,10 @@ struct Step {
 
 Step backward_euler(const Model& model, const State& start, double h, double pose_tol,
                     NewtonReuse* reuse) {
-  AffineStep map;
-  map.dq0 = Eigen::VectorXd::Zero(model.num_dofs);
-  map.v0 = Eigen::VectorXd::Zero(model.num_dofs);
-  map.cq = h;
-  map.cv = 1;
-  NewtonResidual res;
-  res.b = momentum(model, start);
-  res.s = h;
   Step s;
   s.v = velocity_vector(model, start);
   BodyForces f;
-  s.converged =
-      newton_solve(model, start, h, map, res, 50, pose_tol, s.v, s.end, f, s.stats, reuse);
+  s.converged = backward_euler_solve(model, start, h, 50, pose_tol, s.v, s.end, f, s.stats, reuse);
   return s;
 }
 

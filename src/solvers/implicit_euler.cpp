@@ -6,6 +6,22 @@
 #include "solvers/time_stepper.hpp"
 
 namespace finseg {
+
+bool backward_euler_solve(const Model& model, const State& start, double h, int max_iterations,
+                          double pose_tol, Eigen::VectorXd& v, State& state, BodyForces& f,
+                          SolverStats& stats, NewtonReuse* reuse) {
+  AffineStep map;
+  map.dq0 = Eigen::VectorXd::Zero(model.num_dofs);
+  map.v0 = Eigen::VectorXd::Zero(model.num_dofs);
+  map.cq = h;
+  map.cv = 1;
+  NewtonResidual res;
+  res.b = momentum(model, start);
+  res.s = h;
+  return newton_solve(model, start, h, map, res, max_iterations, pose_tol, v, state, f, stats,
+                      reuse);
+}
+
 namespace {
 
 class BackwardEuler final : public TimeStepper {
@@ -17,22 +33,13 @@ class BackwardEuler final : public TimeStepper {
 
   void begin(const Model&, const State&, const BodyForces&) override {}
 
-  // Solves M(q1) v1 - p0 = h g(q0 + h v1, v1) for v1.
   StepTry attempt(const Model& model, const State& start, double h, State& state, BodyForces& f,
                   SolverStats& stats) override {
     const Eigen::VectorXd v0 = velocity_vector(model, start);
-    AffineStep map;
-    map.dq0 = Eigen::VectorXd::Zero(model.num_dofs);
-    map.v0 = Eigen::VectorXd::Zero(model.num_dofs);
-    map.cq = h;
-    map.cv = 1;
-    NewtonResidual res;
-    res.b = momentum(model, start);
-    res.s = h;
     Eigen::VectorXd v = v0;
     StepTry r;
-    r.converged = newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, v, state, f,
-                               stats, &reuse_);
+    r.converged = backward_euler_solve(model, start, h, max_iterations_, 1e-3 * tol_, v, state, f,
+                                       stats, &reuse_);
     if (r.converged) r.error = 0.5 * h * (v - v0).lpNorm<Eigen::Infinity>() / tol_;
     return r;
   }

@@ -62,6 +62,12 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats,
                   NewtonReuse* reuse = nullptr);
 
+/// One backward-Euler step of h from `start` (src/solvers/implicit_euler.cpp): solves
+/// M(q1) v1 - p0 = h g(q0 + h v1, v1) for v1 by newton_solve from the guess in `v`.
+bool backward_euler_solve(const Model& model, const State& start, double h, int max_iterations,
+                          double pose_tol, Eigen::VectorXd& v, State& state, BodyForces& f,
+                          SolverStats& stats, NewtonReuse* reuse);
+
 /// Gyroscopic vector (0, w_W x J_W w_W) of the free bodies.
 Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state);
 

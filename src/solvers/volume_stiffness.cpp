@@ -31,62 +31,68 @@ VolumeStiffness volume_stiffness(const Model& model, const State& state) {
   return out;
 }
 
+namespace {
+
+// The right-hand sides [b, a_1 .. a_n] that one factorization of A solves together.
+Eigen::MatrixXd with_terms(const Eigen::VectorXd& b, const VolumeStiffness& terms) {
+  const auto n = static_cast<Eigen::Index>(terms.a.size());
+  Eigen::MatrixXd B(b.size(), n + 1);
+  B.col(0) = b;
+  for (Eigen::Index j = 0; j < n; ++j) B.col(j + 1) = terms.a[static_cast<std::size_t>(j)];
+  return B;
+}
+
+// (A + U C U^T)^-1 b = y - Z (C^-1 + U^T Z)^-1 U^T y from Y = A^-1 [b, U] = [y, Z]: x, with the
+// capacitance matrix's LU left in `cap`; false where it is singular.
+bool woodbury(const Eigen::MatrixXd& Y, double s, const VolumeStiffness& terms,
+              Eigen::FullPivLU<Eigen::MatrixXd>& cap, Eigen::VectorXd& x) {
+  const auto n = static_cast<Eigen::Index>(terms.a.size());
+  const auto Z = Y.rightCols(n);
+  Eigen::MatrixXd C(n, n);
+  Eigen::VectorXd Uty(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::VectorXd& a_i = terms.a[static_cast<std::size_t>(i)];
+    Uty[i] = a_i.dot(Y.col(0));
+    for (Eigen::Index j = 0; j < n; ++j) C(i, j) = a_i.dot(Z.col(j));
+    C(i, i) += 1 / (s * terms.k[static_cast<std::size_t>(i)]);
+  }
+  cap.compute(C);
+  if (!cap.isInvertible()) return false;
+  x = Y.col(0) - Z * cap.solve(Uty);
+  return x.allFinite();
+}
+
+}  // namespace
+
 bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
                                  const VolumeStiffness& terms, const Eigen::VectorXd& b,
                                  Eigen::VectorXd& x) {
-  const int n = static_cast<int>(terms.a.size());
-  if (n == 0) return sparse_solve(A, b, x);
-  // (A + U C U^T)^-1 b = y - Z (C^-1 + U^T Z)^-1 U^T y with y = A^-1 b, Z = A^-1 U: one
-  // factorization of A for b and the a_k.
-  Eigen::MatrixXd B(b.size(), n + 1), Y;
-  B.col(0) = b;
-  for (int j = 0; j < n; ++j) B.col(j + 1) = terms.a[j];
-  if (!sparse_solve(A, B, Y)) return false;
-  const auto Z = Y.rightCols(n);
-  Eigen::MatrixXd cap(n, n);
-  Eigen::VectorXd Uty(n);
-  for (int i = 0; i < n; ++i) {
-    Uty[i] = terms.a[i].dot(Y.col(0));
-    for (int j = 0; j < n; ++j) cap(i, j) = terms.a[i].dot(Z.col(j));
-    cap(i, i) += 1 / (s * terms.k[i]);
-  }
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(cap);
-  if (!lu.isInvertible()) return false;
-  x = Y.col(0) - Z * lu.solve(Uty);
-  return x.allFinite();
+  if (terms.empty()) return sparse_solve(A, b, x);
+  // One factorization of A for b and the a_k.
+  Eigen::MatrixXd Y;
+  if (!sparse_solve(A, with_terms(b, terms), Y)) return false;
+  Eigen::FullPivLU<Eigen::MatrixXd> cap;
+  return woodbury(Y, s, terms, cap, x);
 }
 
 bool KeptNewtonMatrix::factor_and_solve(const Eigen::SparseMatrix<double>& A, double s,
                                         VolumeStiffness terms, const Eigen::VectorXd& b,
                                         Eigen::VectorXd& x) {
-  const int n = static_cast<int>(terms.a.size());
   a_.clear();
-  Eigen::MatrixXd B(b.size(), n + 1), Y;
-  B.col(0) = b;
-  for (int j = 0; j < n; ++j) B.col(j + 1) = terms.a[j];
-  if (!factor_.factor_and_solve(A, B, Y)) return false;
-  if (n == 0) {
+  Eigen::MatrixXd Y;
+  if (!factor_.factor_and_solve(A, with_terms(b, terms), Y)) return false;
+  if (terms.empty()) {
     x = Y.col(0);
     return true;
   }
-  // As in solve_with_volume_stiffness, with Z and the capacitance matrix kept.
-  Z_ = Y.rightCols(n);
-  Eigen::MatrixXd cap(n, n);
-  Eigen::VectorXd Uty(n);
-  for (int i = 0; i < n; ++i) {
-    Uty[i] = terms.a[i].dot(Y.col(0));
-    for (int j = 0; j < n; ++j) cap(i, j) = terms.a[i].dot(Z_.col(j));
-    cap(i, i) += 1 / (s * terms.k[i]);
-  }
-  capacitance_.compute(cap);
-  if (!capacitance_.isInvertible()) {
+  // As solve_with_volume_stiffness, with Z and the capacitance matrix kept.
+  if (!woodbury(Y, s, terms, capacitance_, x)) {
     factor_.clear();
     return false;
   }
+  Z_ = Y.rightCols(static_cast<Eigen::Index>(terms.a.size()));
   a_ = std::move(terms.a);
-  x = Y.col(0) - Z_ * capacitance_.solve(Uty);
-  if (!x.allFinite()) factor_.clear();
-  return valid();
+  return true;
 }
 
 bool KeptNewtonMatrix::factor_and_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
