@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "core/threads.hpp"
 #include "elements/assemble.hpp"
 #include "elements/force_elements.hpp"
 #include "generators/sheet.hpp"
@@ -91,6 +92,28 @@ TEST(Threads, StaticSolveEndsInTheSameStateOnOneAndTwoThreads) {
   omp_set_num_threads(saved);
   EXPECT_EQ(ends[0].p_W, ends[1].p_W);
   EXPECT_EQ(ends[0].R_WB, ends[1].R_WB);
+}
+
+// The team of a region that asks for 4 threads whatever the setting, as CHOLMOD's do.
+int team_of_four() {
+  int team = 0;
+#pragma omp parallel num_threads(4)
+  {
+#pragma omp single
+    team = omp_get_num_threads();
+  }
+  return team;
+}
+
+TEST(Threads, OneThreadKeepsALibrarysFourThreadRegionOnOneThread) {
+  const int saved = thread_count();
+  set_thread_count(1);
+  EXPECT_EQ(thread_count(), 1);
+  EXPECT_EQ(team_of_four(), 1);
+  set_thread_count(2);  // and back: parallel again
+  EXPECT_EQ(thread_count(), 2);
+  EXPECT_EQ(team_of_four(), 4);
+  set_thread_count(saved);
 }
 
 }  // namespace threads_test

@@ -16,7 +16,7 @@
 #include "apps/finseg/commands.hpp"
 #include "apps/finseg/progress.hpp"
 #include "core/error.hpp"
-#include "elements/force_elements.hpp"
+#include "core/threads.hpp"
 #include "probes/recorder.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
@@ -210,7 +210,7 @@ class Checkpointer {
 
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
-  if (o.threads > 0) set_force_element_threads(o.threads);
+  set_thread_count(o.threads > 0 ? o.threads : thread_count());
   std::vector<Override> overrides;
   for (const std::string& s : o.set) overrides.push_back(parse_override(s));
   Scene scene = read_scene(o.scene, overrides);

@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 #include "core/warnings.hpp"
-#include "elements/force_elements.hpp"
 #include "py_errors.hpp"
 #include "py_scene.hpp"
 #include "solvers/stop_request.hpp"
@@ -108,10 +108,10 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
     throw InputError("<python>", "threads", "must be 0 (one per core) .. 1024");
   // The thread count is process-wide: each run sets its own and puts the previous back.
   struct ThreadsGuard {
-    int previous = force_element_threads();
-    ~ThreadsGuard() { set_force_element_threads(previous); }
+    int previous = thread_count();
+    ~ThreadsGuard() { set_thread_count(previous); }
   } threads_guard;
-  if (threads > 0) set_force_element_threads(threads);
+  set_thread_count(threads > 0 ? threads : thread_count());
   const std::string hash = scene_inputs_hash(ps.text, scene);
   State state = starting_state(scene, start);
   if (out) {

@@ -1,7 +1,5 @@
 #include "elements/force_elements.hpp"
 
-#include <omp.h>
-
 #include "elements/bushing.hpp"
 #include "elements/element_jacobian.hpp"
 
@@ -34,14 +32,6 @@ bool damped(const ElementDef& e) {
 }
 
 }  // namespace
-
-int force_element_threads() {
-  return omp_get_max_threads();
-}
-
-void set_force_element_threads(int n) {
-  omp_set_num_threads(n);
-}
 
 void add_force_elements(const Model& model, const State& state, Assembler& as) {
   if (as.want_jacobian() && as.autodiff_elements()) {

@@ -11,10 +11,4 @@ namespace finseg {
 /// Adds every force element of the model to `as`.
 void add_force_elements(const Model& model, const State& state, Assembler& as);
 
-/// Threads the element loop may use (OpenMP's current limit).
-int force_element_threads();
-
-/// Sets the threads of the element loop (n >= 1; the default is one per core).
-void set_force_element_threads(int n);
-
 }  // namespace finseg
