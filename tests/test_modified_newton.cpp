@@ -17,8 +17,7 @@
 namespace finseg {
 namespace modified_newton_test {
 
-// One backward-Euler step of h from `start`;
-// returns the end velocity, leaves the end state in `end`.
+// One backward-Euler step of h from `start`: the end velocity, the end state in `end`.
 struct Step {
   Eigen::VectorXd v;
   State end;

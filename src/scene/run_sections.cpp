@@ -55,7 +55,8 @@ SolverSettings read_solver_section(const Fields& root) {
   }
   s.rho_inf = f.number("rho_inf", s.rho_inf, interval(0, 1, false, false));
   s.load_steps = f.integer("load_steps", s.load_steps, 1, 1000000);
-  s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);  // 0: solver's own
+  // Absent, it stays 0: the solver's own (newton_iterations()).
+  s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);
   s.tolerance = f.number("tolerance", s.tolerance, positive("(relative)"));
   s.jacobian_reuse = f.flag("jacobian_reuse", s.jacobian_reuse);
   s.jacobian_max_age = f.integer("jacobian_max_age", s.jacobian_max_age, 1, 1000);

@@ -115,11 +115,10 @@ class Linearisation {
 // kHalvings times; the shortest is taken then). Without it Newton cycles for ever between the
 // two sides of a steep, saturating force such as regularised Coulomb friction, whose plateau's
 // tangent jumps the slip velocity across zero and back (docs/solvers.md). Moves x, evaluates
-// the full step with the matrix when `matrix_full`, and the point a halving ends at with it when
-// `matrix_halved` (once that point is known: the tries on the way need only their residual);
-// returns the number of halvings.
-int backtrack(Linearisation& lin, const Eigen::VectorXd& dx, bool matrix_full, bool matrix_halved,
-              Eigen::VectorXd& x) {
+// the full step with the matrix when `matrix_full`, and the point a halving ends at with it
+// (once that point is known: the tries on the way need only their residual); returns the
+// number of halvings.
+int backtrack(Linearisation& lin, const Eigen::VectorXd& dx, bool matrix_full, Eigen::VectorXd& x) {
   const double merit = lin.r.squaredNorm();
   constexpr int kHalvings = 5;
   double a = 1;
@@ -132,7 +131,7 @@ int backtrack(Linearisation& lin, const Eigen::VectorXd& dx, bool matrix_full, b
     a *= 0.5;
   }
   x = x_try;
-  if (k > 0 && matrix_halved) lin.at(x, true);
+  if (k > 0) lin.at(x, true);
   return k;
 }
 
@@ -205,7 +204,7 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     if (fresh) {
       // A step that needed halving leaves the region where this matrix is good (or, made of
       // a symmetric part, shows that part to be poor).
-      renew = backtrack(lin, dx, false, true, x) > 0;
+      renew = backtrack(lin, dx, false, x) > 0;
       exact_only = exact_only || (renew && k.approximate);
       continue;
     }
@@ -261,7 +260,7 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
       lin.finish(x);
       return true;
     }
-    backtrack(lin, dx, true, true, x);
+    backtrack(lin, dx, true, x);
   }
   return false;
 }

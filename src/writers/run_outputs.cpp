@@ -320,14 +320,23 @@ nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const Sol
     probes[t.name] = probe_summary(t, deployed_at_of(scene.model, t));
   nlohmann::json overrides = nlohmann::json::array();
   for (const Override& o : scene.overrides) overrides.push_back(o.path + "=" + o.value);
-  nlohmann::json j{{"scene", scene.file},        {"overrides", overrides},
-                   {"title", run_title(scene)},  {"status", stats.status},
-                   {"message", stats.message},   {"wall_time_s", wall_seconds},
-                   {"threads", thread_count()},  {"solver", solver_json(scene.solver)},
-                   {"stats", stats_json(stats)}, {"model", model_counts(scene.model)},
-                   {"abscissa", rec.abscissa()}, {"outputs", rec.outputs()},
-                   {"probes", probes},           {"files", report.files},
-                   {"warnings", report.warnings}};
+  nlohmann::json j{
+      {"scene", scene.file},
+      {"overrides", overrides},
+      {"title", run_title(scene)},
+      {"status", stats.status},
+      {"message", stats.message},
+      {"wall_time_s", wall_seconds},
+      {"threads", thread_count()},
+      {"solver", solver_json(scene.solver)},
+      {"stats", stats_json(stats)},
+      {"model", model_counts(scene.model)},
+      {"abscissa", rec.abscissa()},
+      {"outputs", rec.outputs()},
+      {"probes", probes},
+      {"files", report.files},
+      {"warnings", report.warnings},
+  };
   const PhaseSettings& ph = scene.outputs.phases;
   if (ph.enabled) j["phases"] = phases_json(run_phases(scene, rec), ph);
   j["provenance"] = provenance_json(scene);
