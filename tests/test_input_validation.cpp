@@ -218,6 +218,19 @@ TEST(SolverOptions, JacobianReuseKeysValidated) {
   EXPECT_EQ(scene.solver.jacobian_max_age, 5);
 }
 
+// Newton's tolerance, a fraction of the local error tolerance: (0, 1] (docs/scene.md).
+TEST(SolverOptions, NewtonToleranceValidated) {
+  for (const char* bad : {"0", "-0.1", "1.5"}) {
+    expect_refused(
+        replaced(kSheet, "type: static", std::string("type: implicit\n  newton_tolerance: ") + bad),
+        "solver.newton_tolerance", "(0, 1]");
+  }
+  const Scene scene = parse_scene(
+      replaced(kSheet, "type: static", "type: implicit\n  newton_tolerance: 0.01"), "s.yaml");
+  EXPECT_EQ(scene.solver.newton_tolerance, 0.01);
+  EXPECT_EQ(parse_scene(kSheet, "s.yaml").solver.newton_tolerance, 1e-3);
+}
+
 // Newton iterations per solve: each solver's own unless the scene names them (docs/scene.md).
 TEST(SolverOptions, NewtonIterationsPerSolverUnlessGiven) {
   EXPECT_EQ(newton_iterations(parse_scene(kSheet, "s.yaml").solver), 50);

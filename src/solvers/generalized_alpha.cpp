@@ -25,7 +25,10 @@ namespace {
 class GeneralizedAlpha final : public TimeStepper {
  public:
   GeneralizedAlpha(const SolverSettings& s, double tol)
-      : p_(chung_hulbert(s.rho_inf)), max_iterations_(newton_iterations(s)), tol_(tol) {
+      : p_(chung_hulbert(s.rho_inf)),
+        max_iterations_(newton_iterations(s)),
+        tol_(tol),
+        newton_tol_(s.newton_tolerance * tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
   }
 
@@ -62,7 +65,7 @@ class GeneralizedAlpha final : public TimeStepper {
     res.with_gyro = true;
     Eigen::VectorXd x = vdot_;
     StepTry r;
-    r.converged = newton_solve(model, start, h, map, res, max_iterations_, 1e-3 * tol_, x, state, f,
+    r.converged = newton_solve(model, start, h, map, res, max_iterations_, newton_tol_, x, state, f,
                                stats, &reuse_);
     if (!r.converged) return r;
     // Zienkiewicz & Xie (1991): local position error (beta - 1/6) h^2 (vdot_{n+1} - vdot_n).
@@ -93,6 +96,7 @@ class GeneralizedAlpha final : public TimeStepper {
   AlphaParameters p_;
   int max_iterations_;
   double tol_;
+  double newton_tol_;  // m and rad
   NewtonReuse reuse_;  // the iteration matrix kept between steps
   Eigen::VectorXd vdot_, a_, next_vdot_, next_a_;
   double h_ = 0, next_h_ = 0;

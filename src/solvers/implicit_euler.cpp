@@ -27,7 +27,7 @@ namespace {
 class BackwardEuler final : public TimeStepper {
  public:
   BackwardEuler(const SolverSettings& s, double tol)
-      : max_iterations_(newton_iterations(s)), tol_(tol) {
+      : max_iterations_(newton_iterations(s)), tol_(tol), newton_tol_(s.newton_tolerance * tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
   }
 
@@ -38,7 +38,7 @@ class BackwardEuler final : public TimeStepper {
     const Eigen::VectorXd v0 = velocity_vector(model, start);
     Eigen::VectorXd v = v0;
     StepTry r;
-    r.converged = backward_euler_solve(model, start, h, max_iterations_, 1e-3 * tol_, v, state, f,
+    r.converged = backward_euler_solve(model, start, h, max_iterations_, newton_tol_, v, state, f,
                                        stats, &reuse_);
     if (r.converged) r.error = 0.5 * h * (v - v0).lpNorm<Eigen::Infinity>() / tol_;
     return r;
@@ -55,6 +55,7 @@ class BackwardEuler final : public TimeStepper {
  private:
   int max_iterations_;
   double tol_;
+  double newton_tol_;  // m and rad
   NewtonReuse reuse_;  // the iteration matrix kept between steps
 };
 

@@ -42,6 +42,9 @@ struct SolverSettings {
   /// contracts (modified Newton, docs/solvers.md); false: a new one every iteration.
   bool jacobian_reuse = true;
   int jacobian_max_age = 20;  ///< implicit: Newton iterations one kept matrix serves at most
+  /// implicit: Newton stops when its pose correction (and with a kept matrix the error bound
+  /// left after it) is below this fraction of the local error tolerance (docs/solvers.md)
+  double newton_tolerance = 1e-3;
 };
 
 /// Newton iterations per solve: `max_iterations`, else 10 for the implicit solver (a harder

@@ -39,7 +39,8 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"max_iterations", newton_iterations(s)},
           {"tolerance", s.tolerance},
           {"jacobian_reuse", s.jacobian_reuse},
-          {"jacobian_max_age", s.jacobian_max_age}};
+          {"jacobian_max_age", s.jacobian_max_age},
+          {"newton_tolerance", s.newton_tolerance}};
 }
 
 nlohmann::json linear_json(const LinearSolveCounters& c) {
