@@ -55,16 +55,21 @@ Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state) 
   return M;
 }
 
-Eigen::VectorXd momentum(const Model& model, const State& state) {
-  Eigen::VectorXd p(model.num_dofs);
+Eigen::VectorXd mass_times(const Model& model, const State& state, const Eigen::VectorXd& x) {
+  Eigen::VectorXd y(model.num_dofs);
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const int d = model.dof_of_body[i];
     if (d < 0) continue;
     const BodyDef& b = model.bodies[i];
-    p.segment<3>(d) = b.mass * state.v_W[i];
-    p.segment<3>(d + 3) = state.R_WB[i] * b.J_B * state.R_WB[i].transpose() * state.w_W[i];
+    const Mat3 J_W = state.R_WB[i] * b.J_B * state.R_WB[i].transpose();
+    y.segment<3>(d) = b.mass * x.segment<3>(d);
+    y.segment<3>(d + 3) = J_W * x.segment<3>(d + 3);
   }
-  return p;
+  return y;
+}
+
+Eigen::VectorXd momentum(const Model& model, const State& state) {
+  return mass_times(model, state, velocity_vector(model, state));
 }
 
 double kinetic_energy(const Model& model, const State& state) {

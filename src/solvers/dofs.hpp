@@ -21,6 +21,9 @@ void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v);
 /// Block-diagonal mass matrix diag(m I, R J_B R^T) of the free bodies.
 Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state);
 
+/// M(q) x block by block, without forming M (x: one 6-vector per free body).
+Eigen::VectorXd mass_times(const Model& model, const State& state, const Eigen::VectorXd& x);
+
 /// Momentum vector (m v_W, J_W w_W) of the free bodies.
 Eigen::VectorXd momentum(const Model& model, const State& state);
 

@@ -76,14 +76,13 @@ class Linearisation {
     compute_forces(model_, state_, f_, with_matrix ? &jac_ : nullptr);
     ++stats_.force_evaluations;
     if (with_matrix) ++stats_.jacobian_evaluations;
-    const Eigen::SparseMatrix<double> M = mass_matrix(model_, state_);
     Eigen::VectorXd g = generalized_forces(model_, f_);
     if (res_.with_gyro) g -= gyroscopic_forces(model_, state_);
-    r = M * x_at - res_.b - res_.s * g;
+    r = mass_times(model_, state_, x_at) - res_.b - res_.s * g;
     if (!with_matrix) return;
     Eigen::SparseMatrix<double> dv = jac_.dv;
     if (res_.with_gyro) dv -= gyroscopic_jacobian(model_, state_);
-    A = M - (res_.s * map_.cv) * dv - (res_.s * map_.cq) * jac_.dq;
+    A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv - (res_.s * map_.cq) * jac_.dq;
   }
 
   // The converged end state at x, with its forces.
@@ -174,11 +173,16 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
       k.symmetric = symmetric;
       dx_prev = 0;
       VolumeStiffness gas = volume_stiffness(model, state);
-      const double asymmetry = symmetric || !gas.empty() ? 0 : asymmetry_ratio(lin.A);
+      const bool nearly = !symmetric && gas.empty();  // may stand for its symmetric part
+      const Eigen::SparseMatrix<double> At =
+          nearly ? Eigen::SparseMatrix<double>(lin.A.transpose()) : Eigen::SparseMatrix<double>();
+      const double asymmetry = nearly ? asymmetry_ratio(lin.A, At) : 0;
       k.approximate = !exact_only && asymmetry > 0 && asymmetry <= k.approximate_asymmetry;
       const bool solved =
-          symmetric || k.approximate
+          symmetric
               ? k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A), -lin.r, dx)
+          : k.approximate
+              ? k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A, At), -lin.r, dx)
               : k.matrix.factor_and_solve(lin.A, s_cq, std::move(gas), -lin.r, dx);
       if (!solved) return false;
     } else if (!k.matrix.solve(-lin.r, dx)) {

@@ -400,16 +400,24 @@ LinearSolveCounters operator-(const LinearSolveCounters& later,
   return d;
 }
 
-SpMat symmetric_part(const SpMat& A) {
-  SpMat S = SpMat(A.transpose()) + A;  // pattern of A + A^T, kept even where values cancel
+SpMat symmetric_part(const SpMat& A, const SpMat& At) {
+  SpMat S = At + A;  // pattern of A + A^T, kept even where values cancel
   S *= 0.5;
   return S;
 }
 
-double asymmetry_ratio(const SpMat& A) {
+SpMat symmetric_part(const SpMat& A) {
+  return symmetric_part(A, SpMat(A.transpose()));
+}
+
+double asymmetry_ratio(const SpMat& A, const SpMat& At) {
   const double A_norm = A.norm();
   if (A_norm == 0) return 0;
-  return (A - SpMat(A.transpose())).norm() / A_norm;
+  return (A - At).norm() / A_norm;
+}
+
+double asymmetry_ratio(const SpMat& A) {
+  return asymmetry_ratio(A, SpMat(A.transpose()));
 }
 
 SymmetricMatrix::SymmetricMatrix(SpMat S, bool finite) : S_(std::move(S)), finite_(finite) {
@@ -419,8 +427,13 @@ SymmetricMatrix::SymmetricMatrix(SpMat S, bool finite) : S_(std::move(S)), finit
 
 SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A) {
   if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);  // refused by the solves
+  return symmetric_part_of(A, SpMat(A.transpose()));
+}
+
+SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A, const SpMat& At) {
+  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);
   // (a + b) / 2 is commutative in floating point: S(i, j) == S(j, i) exactly.
-  return SymmetricMatrix(symmetric_part(A), true);
+  return SymmetricMatrix(symmetric_part(A, At), true);
 }
 
 SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
@@ -453,12 +466,13 @@ bool solve_system(Caches caches, const SpMat& A, const Eigen::MatrixXd& B, Eigen
   Ac.makeCompressed();
   if (!clean_entries(Ac) || !B.allFinite()) return false;
   LinearSolveInfo report;
-  report.asymmetry = asymmetry_ratio(Ac);
+  const SpMat At = Ac.transpose();
+  report.asymmetry = asymmetry_ratio(Ac, At);
   bool ok = false;
   if (Ac.rows() > 0 && Ac.rows() == Ac.cols() && report.asymmetry <= kSymmetricAsymmetry) {
     // Also for a symmetric A: its stored pattern need not be (a stored zero), and CHOLMOD
     // crashed on such a pattern (ContactDynamics.StaticSolverHoldsAPlateInsideTheCone).
-    ok = symmetric_else_lu(caches, Ac, symmetric_part(Ac), report.asymmetry == 0, B, X, report,
+    ok = symmetric_else_lu(caches, Ac, symmetric_part(Ac, At), report.asymmetry == 0, B, X, report,
                            used);
   } else {
     report.path = LinearSolvePath::LU;

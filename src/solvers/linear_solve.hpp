@@ -34,6 +34,9 @@ class SymmetricMatrix {
   /// (A + A^T) / 2 with the pattern of A + A^T. A not square or with a non-finite entry makes
   /// it unusable (`finite()` false: the solves refuse it).
   static SymmetricMatrix symmetric_part_of(const Eigen::SparseMatrix<double>& A);
+  /// The same with A^T given (A's transpose, made once for this and asymmetry_ratio).
+  static SymmetricMatrix symmetric_part_of(const Eigen::SparseMatrix<double>& A,
+                                           const Eigen::SparseMatrix<double>& At);
   /// This matrix plus diag(d) (d finite; the pattern gains the diagonal).
   SymmetricMatrix plus_diagonal(const Eigen::VectorXd& d) const;
   const Eigen::SparseMatrix<double>& matrix() const { return S_; }
@@ -76,11 +79,15 @@ inline constexpr int kCachedPatterns = 4;
 /// Largest asymmetry ratio that counts as symmetric (assembly round-off); linear_solve.cpp.
 inline constexpr double kSymmetricAsymmetry = 1e-13;
 
-/// Symmetric part (A + A^T) / 2, with the pattern of A + A^T (also where values cancel).
+/// Symmetric part (A + A^T) / 2, with the pattern of A + A^T (also where values cancel);
+/// `At` is A^T where the caller has it already.
 Eigen::SparseMatrix<double> symmetric_part(const Eigen::SparseMatrix<double>& A);
+Eigen::SparseMatrix<double> symmetric_part(const Eigen::SparseMatrix<double>& A,
+                                           const Eigen::SparseMatrix<double>& At);
 
-/// Asymmetry ratio ||A - A^T||_F / ||A||_F (0 for a zero matrix).
+/// Asymmetry ratio ||A - A^T||_F / ||A||_F (0 for a zero matrix); `At` as above.
 double asymmetry_ratio(const Eigen::SparseMatrix<double>& A);
+double asymmetry_ratio(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& At);
 
 /// Solves A x = b; returns false if A is singular (e.g. an unrestrained mechanism) or an
 /// entry of A or b is not finite. Fills `info` when given.
