@@ -145,6 +145,31 @@ bool near(double a, double b) {
   return a == b || (a * b > 0 && std::abs(std::log(a / b)) <= std::log(kCoefficientRatio));
 }
 
+// Makes `lin.A` (at the iterate, with coefficients s_cq and s_cv) the kept matrix and solves
+// with it for the step dx: as the factor of its symmetric part where the model is symmetric, or
+// nearly so and LU is not required (`exact_only`), else as LU with the gas terms.
+bool factor_new_matrix(const Model& model, const State& state, const Linearisation& lin,
+                       double s_cq, double s_cv, bool symmetric, bool exact_only, NewtonReuse& k,
+                       Eigen::VectorXd& dx) {
+  k.age = 0;
+  k.s_cq = s_cq;
+  k.s_cv = s_cv;
+  k.symmetric = symmetric;
+  VolumeStiffness gas = volume_stiffness(model, state);
+  const bool nearly = !symmetric && gas.empty();  // may stand for its symmetric part
+  const Eigen::SparseMatrix<double> At =
+      nearly ? Eigen::SparseMatrix<double>(lin.A.transpose()) : Eigen::SparseMatrix<double>();
+  const double asymmetry = nearly ? asymmetry_ratio(lin.A, At) : 0;
+  k.approximate = !exact_only && asymmetry > 0 && asymmetry <= k.approximate_asymmetry;
+  if (symmetric) {
+    return k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A), -lin.r, dx);
+  }
+  if (k.approximate) {
+    return k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A, At), -lin.r, dx);
+  }
+  return k.matrix.factor_and_solve(lin.A, s_cq, std::move(gas), -lin.r, dx);
+}
+
 // Newton with the iteration matrix kept while it contracts (docs/solvers.md, "Modified
 // Newton"); the residual is always exact, so the solution is Newton's to the tolerance.
 // A kept matrix is an approximation anyway, so a nearly symmetric one (damping, friction and
@@ -167,24 +192,10 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     const bool fresh = renew;
     if (fresh) {
       ++stats.factorizations;
-      k.age = 0;
-      k.s_cq = s_cq;
-      k.s_cv = s_cv;
-      k.symmetric = symmetric;
       dx_prev = 0;
-      VolumeStiffness gas = volume_stiffness(model, state);
-      const bool nearly = !symmetric && gas.empty();  // may stand for its symmetric part
-      const Eigen::SparseMatrix<double> At =
-          nearly ? Eigen::SparseMatrix<double>(lin.A.transpose()) : Eigen::SparseMatrix<double>();
-      const double asymmetry = nearly ? asymmetry_ratio(lin.A, At) : 0;
-      k.approximate = !exact_only && asymmetry > 0 && asymmetry <= k.approximate_asymmetry;
-      const bool solved =
-          symmetric
-              ? k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A), -lin.r, dx)
-          : k.approximate
-              ? k.matrix.factor_and_solve(SymmetricMatrix::symmetric_part_of(lin.A, At), -lin.r, dx)
-              : k.matrix.factor_and_solve(lin.A, s_cq, std::move(gas), -lin.r, dx);
-      if (!solved) return false;
+      if (!factor_new_matrix(model, state, lin, s_cq, s_cv, symmetric, exact_only, k, dx)) {
+        return false;
+      }
     } else if (!k.matrix.solve(-lin.r, dx)) {
       lin.at(x, true);  // (cannot happen with a factor that solved once; renewed all the same)
       renew = true;
