@@ -44,7 +44,7 @@ Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state) 
     const int d = model.dof_of_body[i];
     if (d < 0) continue;
     const BodyDef& b = model.bodies[i];
-    const Mat3 J_W = state.R_WB[i] * b.J_B * state.R_WB[i].transpose();
+    const Mat3 J_W = inertia_W(model, state, i);
     for (int r = 0; r < 3; ++r) {
       t.emplace_back(d + r, d + r, b.mass);
       for (int c = 0; c < 3; ++c) t.emplace_back(d + 3 + r, d + 3 + c, J_W(r, c));
@@ -60,10 +60,8 @@ Eigen::VectorXd mass_times(const Model& model, const State& state, const Eigen::
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const int d = model.dof_of_body[i];
     if (d < 0) continue;
-    const BodyDef& b = model.bodies[i];
-    const Mat3 J_W = state.R_WB[i] * b.J_B * state.R_WB[i].transpose();
-    y.segment<3>(d) = b.mass * x.segment<3>(d);
-    y.segment<3>(d + 3) = J_W * x.segment<3>(d + 3);
+    y.segment<3>(d) = model.bodies[i].mass * x.segment<3>(d);
+    y.segment<3>(d + 3) = inertia_W(model, state, i) * x.segment<3>(d + 3);
   }
   return y;
 }

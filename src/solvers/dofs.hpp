@@ -18,6 +18,11 @@ void apply_pose_increment(const Model& model, State& state, const Eigen::VectorX
 Eigen::VectorXd velocity_vector(const Model& model, const State& state);
 void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v);
 
+/// Inertia of body i about its centroid in the world frame, R_WB J_B R_WB^T (kg m^2).
+inline Mat3 inertia_W(const Model& model, const State& state, size_t i) {
+  return state.R_WB[i] * model.bodies[i].J_B * state.R_WB[i].transpose();
+}
+
 /// Block-diagonal mass matrix diag(m I, R J_B R^T) of the free bodies.
 Eigen::SparseMatrix<double> mass_matrix(const Model& model, const State& state);
 

@@ -19,7 +19,7 @@ Eigen::SparseMatrix<double> gyroscopic_jacobian(const Model& model, const State&
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const int d = model.dof_of_body[i];
     if (d < 0) continue;
-    const Mat3 J_W = state.R_WB[i] * model.bodies[i].J_B * state.R_WB[i].transpose();
+    const Mat3 J_W = inertia_W(model, state, i);
     const Vec3& w = state.w_W[i];
     const Mat3 G = hat<double>(w) * J_W - hat<double>(J_W * w);
     for (int r = 0; r < 3; ++r) {
@@ -38,7 +38,7 @@ Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state) {
   for (size_t i = 0; i < model.bodies.size(); ++i) {
     const int d = model.dof_of_body[i];
     if (d < 0) continue;
-    const Mat3 J_W = state.R_WB[i] * model.bodies[i].J_B * state.R_WB[i].transpose();
+    const Mat3 J_W = inertia_W(model, state, i);
     g.segment<3>(d + 3) = state.w_W[i].cross(J_W * state.w_W[i]);
   }
   return g;
