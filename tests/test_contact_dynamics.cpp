@@ -294,7 +294,8 @@ Thrown thrown_plate(double mu_s, double mu_d, double v_d = 1e-3) {
   s.v_W[1] = Vec3(v0, 0, 0);
   SolverSettings set;
   set.kind = SolverKind::Implicit;
-  set.t_end = 2 * v0 / (mu_d * kG);
+  // (a whole number of steps: the closed form below takes every step h)
+  set.t_end = h * std::ceil(2 * v0 / (mu_d * kG) / h);
   set.output_interval = set.t_end;
   set.dt = set.dt_max = h;
   set.atol = 1e-5;  // the local error h/2 |dv| = h^2 a / 2 = 5.9e-6 m: every step is h

@@ -34,6 +34,16 @@ bool history_event(const State& before, const State& after) {
   return false;
 }
 
+// The step from now to a mark (the next output or the end) at most `h` long: the distance is
+// spread over equal steps, so that no sliver is left before the mark (a step of 1e-5 h there
+// costs a whole Newton solve and, its coefficients far from the kept matrix's, a factorization
+// for it and one after it: docs/solvers.md, "Step control").
+double step_toward(double to_mark, double h) {
+  if (to_mark <= h) return to_mark;
+  // (1e-9: a distance a rounding above n steps is still n steps)
+  return to_mark / std::ceil(to_mark / h - 1e-9);
+}
+
 std::unique_ptr<TimeStepper> make_stepper(const SolverSettings& s, double tol) {
   if (s.scheme == ImplicitScheme::GeneralizedAlpha) return make_generalized_alpha(s, tol);
   return make_backward_euler(s, tol);
@@ -80,8 +90,8 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
   stats.smallest_step = h;
   bool after_rejection = false;
   while (state.t < settings.t_end - 1e-12 * every) {
-    const double h_try = std::min(
-        {h, next_output - state.t, settings.t_end - state.t, gas_step_limit(model, state)});
+    const double h_try = step_toward(std::min(next_output, settings.t_end) - state.t,
+                                     std::min(h, gas_step_limit(model, state)));
     require_step_advances(state.t, h_try, "implicit solver");
     const State start = state;
     const StepTry r = stepper->attempt(model, start, h_try, state, f, stats);
@@ -106,12 +116,12 @@ void run_implicit(const Model& model, State& state, const SolverSettings& settin
     ++stats.steps;
     stats.smallest_step = std::min(stats.smallest_step, h_try);
     stats.largest_step = std::max(stats.largest_step, h_try);
-    // No growth right after a rejection: the estimate that failed is still close (Hairer).
-    const double grown = h_try * std::clamp(0.9 * std::pow(std::max(r.error, 1e-12), -root), 0.2,
-                                            after_rejection ? 1.0 : 2.0);
+    // The step the error of this one asks for, within 0.2 .. 2 of the step intended (this one
+    // may have been shortened for a mark); no growth right after a rejection: the estimate
+    // that failed is still close (Hairer).
+    const double asked = 0.9 * h_try * std::pow(std::max(r.error, 1e-12), -root);
+    h = std::min(h_max, std::clamp(asked, 0.2 * h, (after_rejection ? 1.0 : 2.0) * h));
     after_rejection = false;
-    // A step shortened only to land on an output time says nothing about the next one.
-    h = std::min(h_max, h_try < h ? std::max(h, grown) : grown);
     const bool at_output =
         state.t >= next_output - 1e-9 * every || state.t >= settings.t_end - 1e-12 * every;
     if (at_output) next_output += every;
