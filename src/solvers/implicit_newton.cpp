@@ -136,7 +136,7 @@ int backtrack(Linearisation& lin, const Eigen::VectorXd& dx, bool matrix_full, E
 
 // A kept matrix serves while each of its steps lowers |r|_2 at least by this factor. On the
 // lab cone pulls at newton_tolerance 0.1 (BENCHMARKS.md, "Steps spread to the outputs") 0.8
-// against 0.5: 175 segments the same CPU, 700 segments 27 % fewer factorizations and 25 % less
+// against 0.5: 175 segments the same CPU, 700 segments 27 % fewer factorizations and 23 % less
 // CPU; where the symmetric part serves, fewer new ones also fail to contract and need LU.
 constexpr double kTheta = 0.8;
 // ... and while s cq and s cv (the step size) stay within this ratio of those it was made
