@@ -426,12 +426,11 @@ SymmetricMatrix::SymmetricMatrix(SpMat S, bool finite) : S_(std::move(S)), finit
 }
 
 SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A) {
-  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);  // refused by the solves
   return symmetric_part_of(A, SpMat(A.transpose()));
 }
 
 SymmetricMatrix SymmetricMatrix::symmetric_part_of(const SpMat& A, const SpMat& At) {
-  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);
+  if (A.rows() != A.cols()) return SymmetricMatrix(SpMat(), false);  // refused by the solves
   // (a + b) / 2 is commutative in floating point: S(i, j) == S(j, i) exactly.
   return SymmetricMatrix(symmetric_part(A, At), true);
 }
