@@ -235,6 +235,7 @@ bool factor(Cholmod& f, bool& analysed, const SpMat& S) {
 struct Caches {
   PatternCache<LuSlot>& lu;
   PatternCache<SymmetricSlot>& symmetric;
+  bool refine_lu = true;  // false: LU solves unrefined (modified Newton corrects them)
 };
 
 Caches thread_caches() {
@@ -294,9 +295,9 @@ double refined_solve(const Cholmod& f, const SpMat& A, const Eigen::VectorXd& b,
 }
 
 // Solves A X = B, one factorization for all columns (each solved as a vector: the same bits
-// as a single solve).
+// as a single solve), refined against A when `refine`.
 bool lu_solve(PatternCache<LuSlot>& cache, const SpMat& A, const Eigen::MatrixXd& B,
-              Eigen::MatrixXd& X, UsedFactor& used) {
+              Eigen::MatrixXd& X, UsedFactor& used, bool refine) {
   if (A.rows() != A.cols() || B.rows() != A.rows()) return false;
   if (A.rows() == 0) {  // UMFPACK refuses n = 0; the empty system has the empty solution
     X.resize(0, B.cols());
@@ -315,7 +316,7 @@ bool lu_solve(PatternCache<LuSlot>& cache, const SpMat& A, const Eigen::MatrixXd
   Eigen::VectorXd x;
   for (Eigen::Index j = 0; j < B.cols(); ++j) {
     const Eigen::VectorXd b = B.col(j);
-    if (!slot.lu.solve(A, b, x)) return false;
+    if (!slot.lu.solve(A, b, x, refine)) return false;
     X.col(j) = x;
   }
   return true;
@@ -454,7 +455,7 @@ bool symmetric_else_lu(Caches caches, const SpMat& A, const SpMat& S, bool exact
     return true;
   }
   report.path = LinearSolvePath::LU;
-  return lu_solve(caches.lu, A, B, X, used);
+  return lu_solve(caches.lu, A, B, X, used, caches.refine_lu);
 }
 
 // sparse_solve(A, B, X) with the given caches; `Ac` ends as the matrix solved (compressed,
@@ -475,7 +476,7 @@ bool solve_system(Caches caches, const SpMat& A, const Eigen::MatrixXd& B, Eigen
                            used);
   } else {
     report.path = LinearSolvePath::LU;
-    ok = lu_solve(caches.lu, Ac, B, X, used);
+    ok = lu_solve(caches.lu, Ac, B, X, used, caches.refine_lu);
   }
   if (info != nullptr) *info = report;
   return ok;
@@ -498,7 +499,7 @@ bool solve_symmetric(Caches caches, const SymmetricMatrix& S, const Eigen::Matri
     ok = symmetric_else_lu(caches, S.matrix(), S.matrix(), true, B, X, report, used);
   } else {
     report.path = LinearSolvePath::LU;
-    ok = lu_solve(caches.lu, S.matrix(), B, X, used);
+    ok = lu_solve(caches.lu, S.matrix(), B, X, used, caches.refine_lu);
   }
   if (info != nullptr) *info = report;
   return ok;
@@ -589,7 +590,7 @@ bool KeptFactorization::factor_and_solve(const SpMat& A, const Eigen::MatrixXd& 
   Impl& k = *impl_;
   k.used = {};
   k.valid = counted([&] {
-    return solve_system({k.lu, k.symmetric}, A, B, X, nullptr, k.A, k.used);
+    return solve_system({k.lu, k.symmetric, false}, A, B, X, nullptr, k.A, k.used);
   });
   return k.valid;
 }
@@ -598,7 +599,9 @@ bool KeptFactorization::factor_and_solve(const SymmetricMatrix& S, const Eigen::
                                          Eigen::MatrixXd& X) {
   Impl& k = *impl_;
   k.used = {};
-  k.valid = counted([&] { return solve_symmetric({k.lu, k.symmetric}, S, B, X, nullptr, k.used); });
+  k.valid = counted([&] {
+    return solve_symmetric({k.lu, k.symmetric, false}, S, B, X, nullptr, k.used);
+  });
   if (k.valid) k.A = S.matrix();
   return k.valid;
 }

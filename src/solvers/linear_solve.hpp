@@ -110,17 +110,18 @@ CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b
                               Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
 
 /// A factorization kept for further right-hand sides: factor once, solve many (the modified
-/// Newton iteration, docs/solvers.md). The factoring solve takes the path sparse_solve takes
-/// and gives its bits; later solves reuse that factor without iterative refinement (the
-/// iteration that asks corrects an inexact step). Holds its own symbolic analyses.
+/// Newton iteration, docs/solvers.md). The factoring solve takes the path sparse_solve takes;
+/// no LU solve is refined, the factoring one included (the iteration that asks corrects an
+/// inexact step), the symmetric path refines as sparse_solve does (its check that the factor
+/// serves). Holds its own symbolic analyses.
 class KeptFactorization {
  public:
   KeptFactorization();
   ~KeptFactorization();
   KeptFactorization(const KeptFactorization&) = delete;
   KeptFactorization& operator=(const KeptFactorization&) = delete;
-  /// Solves A X = B as sparse_solve(A, B, X) does and keeps the factor; false (none kept)
-  /// where sparse_solve fails.
+  /// Solves A X = B on sparse_solve(A, B, X)'s path (its bits but for LU's refinement) and
+  /// keeps the factor; false (none kept) where sparse_solve fails.
   bool factor_and_solve(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B,
                         Eigen::MatrixXd& X);
   /// Solves S X = B as sparse_solve(S, b, x) does for each column and keeps the factor.

@@ -35,7 +35,8 @@ bool solve_with_volume_stiffness(const Eigen::SparseMatrix<double>& A, double s,
 /// LU are kept, so that a later solve is one back substitution and a k x k solve.
 class KeptNewtonMatrix {
  public:
-  /// Solves as solve_with_volume_stiffness does (the same bits) and keeps the factors.
+  /// Solves as solve_with_volume_stiffness does (LU unrefined: KeptFactorization) and keeps
+  /// the factors.
   bool factor_and_solve(const Eigen::SparseMatrix<double>& A, double s, VolumeStiffness terms,
                         const Eigen::VectorXd& b, Eigen::VectorXd& x);
   /// Solves as sparse_solve(S, b, x) does and keeps the factor (no gas terms).
