@@ -88,9 +88,10 @@ T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHist
     const double s = law_direction(*crease);
     const T alpha = fold_angle<T>(R_WE, R_WF, hist.fold_angle);
     const double phi = s * value_of(alpha);
-    const MomentSample m = crease->law->evaluate(phi, hist, t);
+    const MomentEnergy law = crease->law->evaluate_with_energy(phi, hist, t);
+    const MomentSample& m = law.sample;
     M_alpha = lift(alpha, s * m.moment, m.stiffness);
-    energy += lift(alpha, crease->law->energy(phi, hist, t), s * m.moment);
+    energy += lift(alpha, law.energy, s * m.moment);
     grad_alpha = fold_angle_gradient<T>(R_WE, R_WF);
     R_F_fold = so3_exp<T>(Vec3T<T>(T(0), alpha, T(0)));
     R_FE = R_F_fold.transpose() * R_FE;

@@ -29,6 +29,12 @@ struct MomentSample {
   double stiffness = 0;
 };
 
+/// A moment sample and the stored energy U(phi) (J) at the same angle.
+struct MomentEnergy {
+  MomentSample sample;
+  double energy = 0;
+};
+
 /// When a crease counts as opened and closed again (ElementHistory::openings), in terms of
 /// the opening angle theta = pi - phi, rad. Opened: theta rises above `opened_above`;
 /// the opening is complete (openings += 1) when theta then falls below `closed_below`.
@@ -51,6 +57,12 @@ class CreaseLaw {
   /// depend on history and time. The default integrates the moment from the rest angle by
   /// Gauss-Legendre quadrature; laws with a closed form override it.
   virtual double energy(double phi, const ElementHistory& history, double t) const;
+  /// evaluate() and energy() at one angle (a force element wants both); a law that solves for
+  /// an inner angle overrides it to solve once.
+  virtual MomentEnergy evaluate_with_energy(double phi, const ElementHistory& history,
+                                            double t) const {
+    return {evaluate(phi, history, t), energy(phi, history, t)};
+  }
   /// Thresholds for counting openings (commit_crease_history).
   virtual OpeningRule opening_rule() const { return {}; }
   /// True: the law's angle is phi = s * alpha (the crease's own direction); false: alpha.

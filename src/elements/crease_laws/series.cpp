@@ -11,20 +11,37 @@ namespace finseg {
 SeriesCreaseLaw::SeriesCreaseLaw(std::shared_ptr<const CreaseLaw> law, double spring)
     : WrappedCreaseLaw(std::move(law)), spring_(spring) {}
 
-double SeriesCreaseLaw::law_angle(double phi, const ElementHistory& history, double t) const {
-  // g(x) = M_law(x) - k (phi - x) rises with x (g' = K_law + k > 0). Its root lies between
-  // phi and phi - M_law(phi) / k for a law whose moment rises with the angle; safeguarded
-  // Newton inside that bracket, widened if the law is not monotone there.
-  const auto g = [&](double x) {
-    const MomentSample m = law_->evaluate(x, history, t);
-    return std::pair{m.moment - spring_ * (phi - x), m.stiffness + spring_};
+SeriesCreaseLaw::Split SeriesCreaseLaw::split(double phi, const ElementHistory& history,
+                                              double t) const {
+  // g(x) = M_law(x) - k (phi - x) rises with x (g' = K_law + k > 0); g(phi) = M_law(phi).
+  const MomentSample at_phi = law_->evaluate(phi, history, t);
+  // Newton from phi first: one step is exact for a linear law, a few serve a smooth one, and
+  // each costs one evaluation of the law (the safeguarded search below costs three more).
+  constexpr int kPlainNewton = 8;
+  double x = phi;
+  MomentSample m = at_phi;
+  for (int it = 0; it < kPlainNewton; ++it) {
+    const double gx = m.moment - spring_ * (phi - x), dg = m.stiffness + spring_;
+    if (gx == 0) return {x, m};
+    if (!(dg > 0) || !std::isfinite(gx)) break;
+    const double dx = gx / dg;
+    if (std::abs(dx) <= 1e-15 * std::max(1.0, std::abs(x))) return {x, m};
+    x -= dx;
+    m = law_->evaluate(x, history, t);
+  }
+  // The root lies between phi and phi - M_law(phi) / k for a law whose moment rises with the
+  // angle; safeguarded Newton inside that bracket, widened if the law is not monotone there.
+  const auto g = [&](double y) {
+    const MomentSample my = law_->evaluate(y, history, t);
+    return std::pair{my.moment - spring_ * (phi - y), my.stiffness + spring_};
   };
-  double lo = phi, hi = phi - law_->evaluate(phi, history, t).moment / spring_;
+  double lo = phi, hi = phi - at_phi.moment / spring_;
   if (lo > hi) std::swap(lo, hi);
   for (int k = 0; k < 60 && g(lo).first > 0; ++k) lo -= (hi - lo) + 1e-3;
   for (int k = 0; k < 60 && g(hi).first < 0; ++k) hi += (hi - lo) + 1e-3;
   // Newton where it shrinks the bracket fast enough, else bisection (rtsafe).
-  double x = 0.5 * (lo + hi), dx_old = hi - lo, dx = dx_old;
+  x = 0.5 * (lo + hi);
+  double dx_old = hi - lo, dx = dx_old;
   for (int it = 0; it < 200; ++it) {
     const auto [gx, dg] = g(x);
     if (gx == 0) break;
@@ -41,14 +58,33 @@ double SeriesCreaseLaw::law_angle(double phi, const ElementHistory& history, dou
     }
     if (std::abs(dx) <= 1e-15 * std::max(1.0, std::abs(x))) break;
   }
-  return x;
+  return {x, law_->evaluate(x, history, t)};
+}
+
+double SeriesCreaseLaw::law_angle(double phi, const ElementHistory& history, double t) const {
+  return split(phi, history, t).law_angle;
+}
+
+MomentSample SeriesCreaseLaw::pair_sample(double phi, const Split& s) const {
+  // dM/dphi of two springs in series: k K / (k + K).
+  const double K = s.at_law.stiffness;
+  return {spring_ * (phi - s.law_angle), spring_ * K / (spring_ + K)};
+}
+
+double SeriesCreaseLaw::pair_energy(double phi, const Split& s, const ElementHistory& history,
+                                    double t) const {
+  const double twist = phi - s.law_angle;  // the spring's share
+  return law_->energy(s.law_angle, history, t) + 0.5 * spring_ * twist * twist;
 }
 
 MomentSample SeriesCreaseLaw::evaluate(double phi, const ElementHistory& history, double t) const {
-  const double x = law_angle(phi, history, t);
-  const double K = law_->evaluate(x, history, t).stiffness;
-  // dM/dphi of two springs in series: k K / (k + K).
-  return {spring_ * (phi - x), spring_ * K / (spring_ + K)};
+  return pair_sample(phi, split(phi, history, t));
+}
+
+MomentEnergy SeriesCreaseLaw::evaluate_with_energy(double phi, const ElementHistory& history,
+                                                   double t) const {
+  const Split s = split(phi, history, t);
+  return {pair_sample(phi, s), pair_energy(phi, s, history, t)};
 }
 
 double SeriesCreaseLaw::rest_angle(const ElementHistory& history, double t) const {
@@ -56,8 +92,7 @@ double SeriesCreaseLaw::rest_angle(const ElementHistory& history, double t) cons
 }
 
 double SeriesCreaseLaw::energy(double phi, const ElementHistory& history, double t) const {
-  const double x = law_angle(phi, history, t);
-  return law_->energy(x, history, t) + 0.5 * spring_ * (phi - x) * (phi - x);
+  return pair_energy(phi, split(phi, history, t), history, t);
 }
 
 std::string SeriesCreaseLaw::describe() const {

@@ -20,11 +20,20 @@ class SeriesCreaseLaw final : public WrappedCreaseLaw {
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
+  MomentEnergy evaluate_with_energy(double phi, const ElementHistory& history,
+                                    double t) const override;
   std::string describe() const override;
   /// The law's share of the angle, phi_law (rad).
   double law_angle(double phi, const ElementHistory& history, double t) const;
 
  private:
+  struct Split {
+    double law_angle;     // phi_law, rad
+    MomentSample at_law;  // the law there
+  };
+  Split split(double phi, const ElementHistory& history, double t) const;
+  MomentSample pair_sample(double phi, const Split& s) const;
+  double pair_energy(double phi, const Split& s, const ElementHistory& history, double t) const;
   double spring_;
 };
 
