@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace finseg {
@@ -11,26 +12,37 @@ namespace finseg {
 SeriesCreaseLaw::SeriesCreaseLaw(std::shared_ptr<const CreaseLaw> law, double spring)
     : WrappedCreaseLaw(std::move(law)), spring_(spring) {}
 
+// g(x) = M_law(x) - k (phi - x) rises with x (g' = K_law + k > 0); g(phi) = M_law(phi).
 SeriesCreaseLaw::Split SeriesCreaseLaw::split(double phi, const ElementHistory& history,
                                               double t) const {
-  // g(x) = M_law(x) - k (phi - x) rises with x (g' = K_law + k > 0); g(phi) = M_law(phi).
   const MomentSample at_phi = law_->evaluate(phi, history, t);
-  // Newton from phi first: one step is exact for a linear law, a few serve a smooth one, and
-  // each costs one evaluation of the law (the safeguarded search below costs three more).
-  constexpr int kPlainNewton = 8;
+  if (const auto s = newton_from_phi(phi, at_phi, history, t)) return *s;
+  return safeguarded(phi, at_phi, history, t);
+}
+
+// Newton from phi: one step is exact for a linear law, a few serve a smooth one, and each
+// costs one evaluation of the law (the safeguarded search costs three more to start).
+std::optional<SeriesCreaseLaw::Split> SeriesCreaseLaw::newton_from_phi(
+    double phi, const MomentSample& at_phi, const ElementHistory& history, double t) const {
+  constexpr int kSteps = 8;
   double x = phi;
   MomentSample m = at_phi;
-  for (int it = 0; it < kPlainNewton; ++it) {
+  for (int it = 0; it < kSteps; ++it) {
     const double gx = m.moment - spring_ * (phi - x), dg = m.stiffness + spring_;
-    if (gx == 0) return {x, m};
-    if (!(dg > 0) || !std::isfinite(gx)) break;
+    if (gx == 0) return Split{x, m};
+    if (!(dg > 0) || !std::isfinite(gx)) return std::nullopt;
     const double dx = gx / dg;
-    if (std::abs(dx) <= 1e-15 * std::max(1.0, std::abs(x))) return {x, m};
+    if (std::abs(dx) <= 1e-15 * std::max(1.0, std::abs(x))) return Split{x, m};
     x -= dx;
     m = law_->evaluate(x, history, t);
   }
-  // The root lies between phi and phi - M_law(phi) / k for a law whose moment rises with the
-  // angle; safeguarded Newton inside that bracket, widened if the law is not monotone there.
+  return std::nullopt;
+}
+
+// The root lies between phi and phi - M_law(phi) / k for a law whose moment rises with the
+// angle; safeguarded Newton inside that bracket, widened if the law is not monotone there.
+SeriesCreaseLaw::Split SeriesCreaseLaw::safeguarded(double phi, const MomentSample& at_phi,
+                                                    const ElementHistory& history, double t) const {
   const auto g = [&](double y) {
     const MomentSample my = law_->evaluate(y, history, t);
     return std::pair{my.moment - spring_ * (phi - y), my.stiffness + spring_};
@@ -40,8 +52,7 @@ SeriesCreaseLaw::Split SeriesCreaseLaw::split(double phi, const ElementHistory& 
   for (int k = 0; k < 60 && g(lo).first > 0; ++k) lo -= (hi - lo) + 1e-3;
   for (int k = 0; k < 60 && g(hi).first < 0; ++k) hi += (hi - lo) + 1e-3;
   // Newton where it shrinks the bracket fast enough, else bisection (rtsafe).
-  x = 0.5 * (lo + hi);
-  double dx_old = hi - lo, dx = dx_old;
+  double x = 0.5 * (lo + hi), dx_old = hi - lo, dx = dx_old;
   for (int it = 0; it < 200; ++it) {
     const auto [gx, dg] = g(x);
     if (gx == 0) break;
@@ -73,8 +84,8 @@ MomentSample SeriesCreaseLaw::pair_sample(double phi, const Split& s) const {
 
 double SeriesCreaseLaw::pair_energy(double phi, const Split& s, const ElementHistory& history,
                                     double t) const {
-  const double twist = phi - s.law_angle;  // the spring's share
-  return law_->energy(s.law_angle, history, t) + 0.5 * spring_ * twist * twist;
+  const double bend = phi - s.law_angle;  // the spring's share of the angle
+  return law_->energy(s.law_angle, history, t) + 0.5 * spring_ * bend * bend;
 }
 
 MomentSample SeriesCreaseLaw::evaluate(double phi, const ElementHistory& history, double t) const {

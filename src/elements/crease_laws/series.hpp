@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "elements/crease_laws/wrapped.hpp"
@@ -32,6 +33,10 @@ class SeriesCreaseLaw final : public WrappedCreaseLaw {
     MomentSample at_law;  // the law there
   };
   Split split(double phi, const ElementHistory& history, double t) const;
+  std::optional<Split> newton_from_phi(double phi, const MomentSample& at_phi,
+                                       const ElementHistory& history, double t) const;
+  Split safeguarded(double phi, const MomentSample& at_phi, const ElementHistory& history,
+                    double t) const;
   MomentSample pair_sample(double phi, const Split& s) const;
   double pair_energy(double phi, const Split& s, const ElementHistory& history, double t) const;
   double spring_;
