@@ -9,11 +9,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "elements/crease_law.hpp"
+#include "elements/crease_laws/measured.hpp"
+#include "elements/crease_laws/scaled.hpp"
 #include "elements/crease_laws/series.hpp"
+#include "elements/crease_laws/shifted.hpp"
 #include "generators/zigzag_conditions.hpp"
 #include "patterns/pattern_checks.hpp"
 #include "patterns/zigzag_pattern.hpp"
@@ -192,6 +197,56 @@ void expect_consistent_series(const CreaseLaw& alone, double k, std::vector<doub
     const MomentEnergy both = law.evaluate_with_energy(phi, {}, 0);
     EXPECT_EQ(both.sample.moment, m.moment);
     EXPECT_EQ(both.energy, law.energy(phi, {}, 0));
+  }
+}
+
+// Counts how a wrapping law calls the law it is made from.
+class CountingLaw final : public CreaseLaw {
+ public:
+  explicit CountingLaw(std::shared_ptr<const CreaseLaw> law) : law_(std::move(law)) {}
+  MomentSample evaluate(double phi, const ElementHistory& h, double t) const override {
+    ++separate;
+    return law_->evaluate(phi, h, t);
+  }
+  double energy(double phi, const ElementHistory& h, double t) const override {
+    ++separate;
+    return law_->energy(phi, h, t);
+  }
+  MomentEnergy evaluate_with_energy(double phi, const ElementHistory& h, double t) const override {
+    ++both;
+    return law_->evaluate_with_energy(phi, h, t);
+  }
+  double rest_angle(const ElementHistory& h, double t) const override {
+    return law_->rest_angle(h, t);
+  }
+  std::string describe() const override { return law_->describe(); }
+  mutable int separate = 0, both = 0;
+
+ private:
+  std::shared_ptr<const CreaseLaw> law_;
+};
+
+// A law made from a series law (shifted for folding, scaled to a segment side, relaxing) asks it
+// for moment and energy in one call (one solve), and gives what its separate calls give.
+TEST(ZigzagFoldPath, WrappedSeriesLawGivesBothFromOneCall) {
+  const auto series = std::make_shared<CountingLaw>(
+      std::make_shared<SeriesCreaseLaw>(std::make_shared<SinhLaw>(), 2e-3));
+  const ShiftedCreaseLaw shifted(series, 0.1, 1.2, 1.0);
+  const ScaledCreaseLaw scaled(series, 0.37);
+  const RelaxingCreaseLaw relaxing(series, 0.05, 10.0, 60.0, 30.0);
+  for (const CreaseLaw* law : std::vector<const CreaseLaw*>{&shifted, &scaled, &relaxing}) {
+    for (double phi : {-2.5, 0.4, 1.1, 3.0}) {
+      for (double t : {0.0, 0.5, 2.0}) {
+        const int separate = series->separate, once = series->both;
+        const MomentEnergy both = law->evaluate_with_energy(phi, {}, t);
+        EXPECT_EQ(series->separate, separate) << law->describe();
+        EXPECT_EQ(series->both, once + 1) << law->describe();
+        const MomentSample m = law->evaluate(phi, {}, t);
+        EXPECT_EQ(both.sample.moment, m.moment) << law->describe() << " " << phi;
+        EXPECT_EQ(both.sample.stiffness, m.stiffness) << law->describe() << " " << phi;
+        EXPECT_EQ(both.energy, law->energy(phi, {}, t)) << law->describe() << " " << phi;
+      }
+    }
   }
 }
 

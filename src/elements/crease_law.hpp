@@ -58,7 +58,7 @@ class CreaseLaw {
   /// Gauss-Legendre quadrature; laws with a closed form override it.
   virtual double energy(double phi, const ElementHistory& history, double t) const;
   /// evaluate() and energy() at one angle (a force element wants both); a law that solves for
-  /// an inner angle overrides it to solve once.
+  /// an inner angle overrides it to solve once, and a law made from another passes it on.
   virtual MomentEnergy evaluate_with_energy(double phi, const ElementHistory& history,
                                             double t) const {
     return {evaluate(phi, history, t), energy(phi, history, t)};

@@ -224,6 +224,11 @@ double RelaxingCreaseLaw::energy(double phi, const ElementHistory& history, doub
   return law_->energy(phi + signed_shift(history, t), history, t);
 }
 
+MomentEnergy RelaxingCreaseLaw::evaluate_with_energy(double phi, const ElementHistory& history,
+                                                     double t) const {
+  return law_->evaluate_with_energy(phi + signed_shift(history, t), history, t);
+}
+
 std::string RelaxingCreaseLaw::describe() const {
   return fmt::format("{} relaxing by {} deg per e-fold (tau {} s, age {} s, reference {} s)",
                      law_->describe(), c_ / kDegToRad, tau_, age_, age_ref_);

@@ -22,6 +22,12 @@ double ScaledCreaseLaw::energy(double phi, const ElementHistory& history, double
   return share_ * law_->energy(phi, history, t);
 }
 
+MomentEnergy ScaledCreaseLaw::evaluate_with_energy(double phi, const ElementHistory& history,
+                                                   double t) const {
+  const MomentEnergy m = law_->evaluate_with_energy(phi, history, t);
+  return {{share_ * m.sample.moment, share_ * m.sample.stiffness}, share_ * m.energy};
+}
+
 std::string ScaledCreaseLaw::describe() const {
   return fmt::format("{:.6g} x {}", share_, law_->describe());
 }

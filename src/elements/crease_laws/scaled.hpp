@@ -17,6 +17,8 @@ class ScaledCreaseLaw final : public WrappedCreaseLaw {
   MomentSample evaluate(double phi, const ElementHistory& history, double t) const override;
   double rest_angle(const ElementHistory& history, double t) const override;
   double energy(double phi, const ElementHistory& history, double t) const override;
+  MomentEnergy evaluate_with_energy(double phi, const ElementHistory& history,
+                                    double t) const override;
   std::string describe() const override;
 
  private:

@@ -38,6 +38,12 @@ double ShiftedCreaseLaw::energy(double phi, const ElementHistory& history, doubl
   return law_->energy(phi - shift(t), history, t);
 }
 
+// One call of the wrapped law, so that a law that solves for both (a series law) solves once.
+MomentEnergy ShiftedCreaseLaw::evaluate_with_energy(double phi, const ElementHistory& history,
+                                                    double t) const {
+  return law_->evaluate_with_energy(phi - shift(t), history, t);
+}
+
 std::string ShiftedCreaseLaw::describe() const {
   if (ramp_ <= 0) {
     return fmt::format("{} resting at {:.6g} deg", law_->describe(), rest_end_ / kDegToRad);
