@@ -3,6 +3,7 @@
 // CSV, every warning, and the new crease/pose probes' files.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -55,6 +56,21 @@ TEST(Provenance, VersionFlagPrintsVersionAndRevision) {
   EXPECT_EQ(r.out, "finseg " + version() + " (git " + git_revision() + ")\n");
   EXPECT_TRUE(git_revision() == "unknown" || matches(git_revision(), std::string(40, 'f')));
   EXPECT_FALSE(version().empty());
+}
+
+// The revision is the checkout's HEAD when the program was built (stamped at every build, so a
+// build tree rebuilt after new commits does not report the commit it was configured at).
+TEST(Provenance, RevisionIsTheBuiltCheckoutsHead) {
+  const TempDir dir;
+  const std::string head = dir / "head";
+  const std::string cmd = "git -C \"" + std::string(FINSEG_SOURCE_DIR) + "\" rev-parse HEAD > \"" +
+                          head + "\" 2>/dev/null";
+  std::string expected = "unknown";  // not a checkout (a source archive)
+  if (std::system(cmd.c_str()) == 0) {
+    expected = slurp(head);
+    while (!expected.empty() && expected.back() == '\n') expected.pop_back();
+  }
+  EXPECT_EQ(git_revision(), expected);
 }
 
 // A two-panel sheet folded 170 deg with the example crease table (copied into `dir`); its

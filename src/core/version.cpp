@@ -1,11 +1,10 @@
 #include "core/version.hpp"
 
-// Both are defined by CMake on this file only (CMakeLists.txt).
+// The version is defined by CMake on this file only; the revision comes in a header that the
+// build writes anew whenever HEAD moves (CMakeLists.txt, cmake/git_revision.cmake).
+#include "finseg_git_revision.hpp"
 #ifndef FINSEG_VERSION
 #define FINSEG_VERSION "unknown"
-#endif
-#ifndef FINSEG_GIT_REVISION
-#define FINSEG_GIT_REVISION "unknown"
 #endif
 
 namespace finseg {
