@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 
 #include "core/types.hpp"
 
@@ -16,24 +17,35 @@ Mat3T<T> hat(const Vec3T<T>& v) {
   return m;
 }
 
-/// Rotation matrix exp([phi]x) (Rodrigues), accurate for small and large angles.
+/// sin(t)/t and (1 - cos t)/t^2 at t^2 = th2, by their series near 0.
 template <class T>
-Mat3T<T> so3_exp(const Vec3T<T>& phi) {
+std::pair<T, T> so3_coefficients(const T& th2) {
   using std::cos;
   using std::sin;
   using std::sqrt;
+  if (th2 < T(1e-12)) return {T(1) - th2 / T(6), T(0.5) - th2 / T(24)};
+  const T th = sqrt(th2);
+  return {sin(th) / th, (T(1) - cos(th)) / th2};
+}
+
+/// Rotation matrix exp([phi]x) (Rodrigues), accurate for small and large angles.
+template <class T>
+Mat3T<T> so3_exp(const Vec3T<T>& phi) {
   const T th2 = phi.squaredNorm();
   const Mat3T<T> K = hat(phi);
-  T a, b;
-  if (th2 < T(1e-12)) {
-    a = T(1) - th2 / T(6);
-    b = T(0.5) - th2 / T(24);
-  } else {
-    const T th = sqrt(th2);
-    a = sin(th) / th;
-    b = (T(1) - cos(th)) / th2;
-  }
+  const auto [a, b] = so3_coefficients(th2);
   return Mat3T<T>::Identity() + a * K + b * K * K;
+}
+
+/// Left Jacobian of the exponential map: exp([phi + d]x) = exp([J_l(phi) d]x) exp([phi]x) to
+/// first order in d (Barfoot, State Estimation for Robotics, 7.1.3).
+template <class T>
+Mat3T<T> so3_left_jacobian(const Vec3T<T>& phi) {
+  const T th2 = phi.squaredNorm();
+  const Mat3T<T> K = hat(phi);
+  const auto [a, b] = so3_coefficients(th2);
+  const T c = th2 < T(1e-12) ? T(1) / T(6) - th2 / T(120) : (T(1) - a) / th2;  // (t - sin t)/t^3
+  return Mat3T<T>::Identity() + b * K + c * K * K;
 }
 
 /// Rotation vector phi with exp([phi]x) = R, |phi| <= pi. No singularity except the

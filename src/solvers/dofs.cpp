@@ -1,7 +1,9 @@
 #include "solvers/dofs.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/so3.hpp"
@@ -14,6 +16,123 @@ void apply_pose_increment(const Model& model, State& state, const Eigen::VectorX
     if (d < 0) continue;
     state.p_W[i] += dq.segment<3>(d);
     state.R_WB[i] = so3_exp<double>(dq.segment<3>(d + 3)) * state.R_WB[i];
+  }
+}
+
+RotationBlocks pose_increment_jacobians(const Model& model, const Eigen::VectorXd& dq) {
+  RotationBlocks T(model.bodies.size(), Mat3::Identity());
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d >= 0) T[i] = so3_left_jacobian<double>(dq.segment<3>(d + 3));
+  }
+  return T;
+}
+
+RotationBlocks mass_pose_jacobians(const Model& model, const State& state,
+                                   const Eigen::VectorXd& y) {
+  RotationBlocks B(model.bodies.size(), Mat3::Zero());
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const Mat3 J_W = inertia_W(model, state, i);
+    const Vec3 w = y.segment<3>(d + 3);
+    B[i] = J_W * hat<double>(w) - hat<double>(J_W * w);
+  }
+  return B;
+}
+
+namespace {
+
+// Block-diagonal sparse matrix of the rotation blocks (the fallbacks below).
+Eigen::SparseMatrix<double> rotation_block_matrix(const Model& model, const RotationBlocks& B,
+                                                  double rest) {
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<bool> rotation(model.num_dofs, false);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    for (int r = 0; r < 3; ++r) {
+      rotation[d + 3 + r] = true;
+      for (int c = 0; c < 3; ++c) t.emplace_back(d + 3 + r, d + 3 + c, B[i](r, c));
+    }
+  }
+  for (int k = 0; rest != 0 && k < model.num_dofs; ++k) {
+    if (!rotation[k]) t.emplace_back(k, k, rest);
+  }
+  Eigen::SparseMatrix<double> m(model.num_dofs, model.num_dofs);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
+// Index of entry (row, col) in compressed A, or -1.
+int entry_index(const Eigen::SparseMatrix<double>& A, int row, int col) {
+  const int* inner = A.innerIndexPtr();
+  const int begin = A.outerIndexPtr()[col], end = A.outerIndexPtr()[col + 1];
+  const int* at = std::lower_bound(inner + begin, inner + end, row);
+  return at != inner + end && *at == row ? static_cast<int>(at - inner) : -1;
+}
+
+bool shares_rows(const Eigen::SparseMatrix<double>& A, int c0, int c1) {
+  const int* outer = A.outerIndexPtr();
+  const int n = outer[c0 + 1] - outer[c0];
+  return outer[c1 + 1] - outer[c1] == n &&
+         std::equal(A.innerIndexPtr() + outer[c0], A.innerIndexPtr() + outer[c0] + n,
+                    A.innerIndexPtr() + outer[c1]);
+}
+
+}  // namespace
+
+void add_rotation_blocks(const Model& model, const RotationBlocks& B, double scale,
+                         Eigen::SparseMatrix<double>& A) {
+  if (!A.isCompressed()) A.makeCompressed();
+  std::vector<int> at;  // entry of each rotation-block element, found before writing any
+  at.reserve(9 * model.bodies.size());
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r) at.push_back(entry_index(A, d + 3 + r, d + 3 + c));
+    }
+  }
+  if (std::find(at.begin(), at.end(), -1) != at.end()) {
+    A += scale * rotation_block_matrix(model, B, 0);
+    return;
+  }
+  double* value = A.valuePtr();
+  size_t k = 0;
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    if (model.dof_of_body[i] < 0) continue;
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r) value[at[k++]] += scale * B[i](r, c);
+    }
+  }
+}
+
+void right_multiply_rotation_columns(const Model& model, const RotationBlocks& T,
+                                     Eigen::SparseMatrix<double>& A) {
+  if (!A.isCompressed()) A.makeCompressed();
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d >= 0 && !(shares_rows(A, d + 3, d + 4) && shares_rows(A, d + 3, d + 5))) {
+      A = A * rotation_block_matrix(model, T, 1);
+      return;
+    }
+  }
+  const int* outer = A.outerIndexPtr();
+  double* value = A.valuePtr();
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const int n = outer[d + 4] - outer[d + 3];
+    double* c0 = value + outer[d + 3];
+    double* c1 = value + outer[d + 4];
+    double* c2 = value + outer[d + 5];
+    for (int k = 0; k < n; ++k) {
+      const Eigen::RowVector3d row = Eigen::RowVector3d(c0[k], c1[k], c2[k]) * T[i];
+      c0[k] = row[0];
+      c1[k] = row[1];
+      c2[k] = row[2];
+    }
   }
 }
 

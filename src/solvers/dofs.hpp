@@ -4,6 +4,7 @@
 
 #include <Eigen/SparseCore>
 #include <string>
+#include <vector>
 
 #include "elements/assemble.hpp"
 #include "model/model.hpp"
@@ -13,6 +14,29 @@ namespace finseg {
 
 /// Applies a pose increment: p_W += dq[0:3], R_WB = exp([dq[3:6]]x) R_WB per free body.
 void apply_pose_increment(const Model& model, State& state, const Eigen::VectorXd& dq);
+
+/// One 3 x 3 block per body (bodies without DOFs hold unused blocks).
+using RotationBlocks = std::vector<Mat3, Eigen::aligned_allocator<Mat3>>;
+
+/// d(pose perturbation)/d(dq) of apply_pose_increment from the same start, per free body: the
+/// left Jacobian J_l(dq[3:6]) of its rotation (the identity for its translation): the force
+/// Jacobian's perturbation is exp([dphi]x) R_WB at the incremented pose, not an added increment.
+RotationBlocks pose_increment_jacobians(const Model& model, const Eigen::VectorXd& dq);
+
+/// d(M(q) y)/d(pose perturbation) for a fixed y, per free body: J_W [y_w]x - [J_W y_w]x (the
+/// inertia turns with the body; y_w the rotation part of the body's y).
+RotationBlocks mass_pose_jacobians(const Model& model, const State& state,
+                                   const Eigen::VectorXd& y);
+
+/// A += scale B_i on the rotation rows and columns of each free body i, in place (A holds those
+/// entries, as a Jacobian assembled from 6 x 6 body blocks does; else by a sparse sum).
+void add_rotation_blocks(const Model& model, const RotationBlocks& B, double scale,
+                         Eigen::SparseMatrix<double>& A);
+
+/// A's rotation columns of each free body i times T_i, in place (A's columns of one body share
+/// their rows, as in a Jacobian assembled from 6 x 6 body blocks; else by a sparse product).
+void right_multiply_rotation_columns(const Model& model, const RotationBlocks& T,
+                                     Eigen::SparseMatrix<double>& A);
 
 /// Velocities (v_W, w_W) of the free bodies as one vector, and back.
 Eigen::VectorXd velocity_vector(const Model& model, const State& state);

@@ -12,22 +12,22 @@
 namespace finseg {
 namespace {
 
-// d(w x J_W w)/dw = [w]x J_W - [J_W w]x per free body (rotation block only).
-Eigen::SparseMatrix<double> gyroscopic_jacobian(const Model& model, const State& state) {
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(9 * model.bodies.size());
+// d(w x J_W w)/dw = [w]x J_W - [J_W w]x per free body.
+RotationBlocks gyroscopic_jacobians(const Model& model, const State& state) {
+  RotationBlocks G(model.bodies.size(), Mat3::Zero());
   for (size_t i = 0; i < model.bodies.size(); ++i) {
-    const int d = model.dof_of_body[i];
-    if (d < 0) continue;
+    if (model.dof_of_body[i] < 0) continue;
     const Mat3 J_W = inertia_W(model, state, i);
     const Vec3& w = state.w_W[i];
-    const Mat3 G = hat<double>(w) * J_W - hat<double>(J_W * w);
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) t.emplace_back(d + 3 + r, d + 3 + c, G(r, c));
-    }
+    G[i] = hat<double>(w) * J_W - hat<double>(J_W * w);
   }
-  Eigen::SparseMatrix<double> G(model.num_dofs, model.num_dofs);
-  G.setFromTriplets(t.begin(), t.end());
+  return G;
+}
+
+// d(w x J_W w)/d(pose perturbation) = [w]x d(J_W w)/d(pose): the inertia turns with the body.
+RotationBlocks gyroscopic_pose_jacobians(const Model& model, const State& state) {
+  RotationBlocks G = mass_pose_jacobians(model, state, velocity_vector(model, state));
+  for (size_t i = 0; i < model.bodies.size(); ++i) G[i] = hat<double>(state.w_W[i]) * G[i];
   return G;
 }
 
@@ -80,9 +80,19 @@ class Linearisation {
     if (res_.with_gyro) g -= gyroscopic_forces(model_, state_);
     r = mass_times(model_, state_, x_at) - res_.b - res_.s * g;
     if (!with_matrix) return;
-    Eigen::SparseMatrix<double> dv = jac_.dv;
-    if (res_.with_gyro) dv -= gyroscopic_jacobian(model_, state_);
-    A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv - (res_.s * map_.cq) * jac_.dq;
+    // dr/dx = M - s cv (dg/dv - dgyro/dv) + cq (d(M x)/dq - s (dg/dq - dgyro/dq)) J_l: the pose
+    // is exp([dq]x) R_start, the Jacobians' perturbation exp([dphi]x) R, hence the chain rule
+    // through the exponential map, J_l (docs/solvers.md, "The iteration matrix").
+    Eigen::SparseMatrix<double> dv = jac_.dv, pose = jac_.dq;
+    pose *= -res_.s;
+    add_rotation_blocks(model_, mass_pose_jacobians(model_, state_, x_at), 1, pose);
+    if (res_.with_gyro) {
+      add_rotation_blocks(model_, gyroscopic_jacobians(model_, state_), -1, dv);
+      add_rotation_blocks(model_, gyroscopic_pose_jacobians(model_, state_), res_.s, pose);
+    }
+    right_multiply_rotation_columns(
+        model_, pose_increment_jacobians(model_, map_.dq0 + map_.cq * x_at), pose);
+    A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv + map_.cq * pose;
   }
 
   // The converged end state at x, with its forces.
@@ -246,6 +256,17 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
 }
 
 }  // namespace
+
+void newton_linearisation(const Model& model, const State& start, double h, const AffineStep& map,
+                          const NewtonResidual& res, const Eigen::VectorXd& x, State& state,
+                          Eigen::VectorXd& r, Eigen::SparseMatrix<double>& A) {
+  BodyForces f;
+  SolverStats stats;
+  Linearisation lin(model, start, h, map, res, state, f, stats);
+  lin.at(x, true);
+  r = lin.r;
+  A = lin.A;
+}
 
 bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
                   const NewtonResidual& res, int max_iterations, double pose_tol,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "solvers/solver.hpp"
 #include "solvers/volume_stiffness.hpp"
@@ -61,6 +62,12 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   const NewtonResidual& res, int max_iterations, double pose_tol,
                   Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats,
                   NewtonReuse* reuse = nullptr);
+
+/// The residual r(x) of newton_solve and its iteration matrix dr/dx at x, `state` placed there
+/// (what each Newton iteration with a new matrix solves with; for tests and diagnostics).
+void newton_linearisation(const Model& model, const State& start, double h, const AffineStep& map,
+                          const NewtonResidual& res, const Eigen::VectorXd& x, State& state,
+                          Eigen::VectorXd& r, Eigen::SparseMatrix<double>& A);
 
 /// One backward-Euler step of h from `start` (src/solvers/implicit_euler.cpp): solves
 /// M(q1) v1 - p0 = h g(q0 + h v1, v1) for v1 by newton_solve from the guess in `v`.
