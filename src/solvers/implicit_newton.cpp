@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <utility>
-#include <vector>
 
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
@@ -83,7 +82,9 @@ class Linearisation {
     // dr/dx = M - s cv (dg/dv - dgyro/dv) + cq (d(M x)/dq - s (dg/dq - dgyro/dq)) J_l: the pose
     // is exp([dq]x) R_start, the Jacobians' perturbation exp([dphi]x) R, hence the chain rule
     // through the exponential map, J_l (docs/solvers.md, "The iteration matrix").
-    Eigen::SparseMatrix<double> dv = jac_.dv, pose = jac_.dq;
+    // Worked on in place: jac_ is this evaluation's scratch, refilled at the next.
+    Eigen::SparseMatrix<double>& dv = jac_.dv;
+    Eigen::SparseMatrix<double>& pose = jac_.dq;
     pose *= -res_.s;
     add_rotation_blocks(model_, mass_pose_jacobians(model_, state_, x_at), 1, pose);
     if (res_.with_gyro) {
