@@ -11,6 +11,7 @@
 
 #include "apps/finseg/commands.hpp"
 #include "core/error.hpp"
+#include "core/rigid_fit.hpp"
 #include "core/text.hpp"
 #include "model/segment_shape.hpp"
 #include "patterns/cone_pattern.hpp"
@@ -197,6 +198,29 @@ void gather_pattern(const ConeSpec& s, CreasePattern& p, double gather) {
   }
 }
 
+// The deployed wall with the gathered state's fold angles (gather_pattern) as its creases'
+// targets: `finseg run --fold` gathers it by simulation. Returns the gathered coordinates.
+std::vector<Vec3> target_gathered(const ConeSpec& s, CreasePattern& p, double gather) {
+  CreasePattern g = p;
+  gather_pattern(s, g, gather);
+  for (std::size_t e = 0; e < p.edges.size(); ++e) p.edges[e].fold_angle = g.edges[e].fold_angle;
+  return g.vertices_folded_m;
+}
+
+std::vector<Vec3> face_points(const std::vector<Vec3>& x, const std::vector<int>& face) {
+  std::vector<Vec3> out;
+  for (int v : face) out.push_back(x[v]);
+  return out;
+}
+
+// Where the point `flat` of rigid face `face` lies with the pattern's vertices at `x`.
+Vec3 placed(const CreasePattern& p, const std::vector<Vec3>& x, int face, const Vec2& flat) {
+  std::vector<Vec3> from;
+  for (int v : p.faces[face])
+    from.emplace_back(p.vertices_flat_m[v].x(), p.vertices_flat_m[v].y(), 0);
+  return best_rigid_fit(from, face_points(x, p.faces[face])).apply(Vec3(flat.x(), flat.y(), 0));
+}
+
 // Fixed end plates closing wall ring `ring` (0: the top): a fan of triangles from the ring's
 // centre, counter-clockwise seen from outside the cone (from above at the top).
 std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, bool top) {
@@ -245,8 +269,9 @@ void register_cone(CLI::App* gen) {
       ->capture_default_str();
   c->add_option("--axial-fold-angle", angles->second, "stowed fold of the rings, deg (0, 180)")
       ->capture_default_str();
-  c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
-      ->capture_default_str();
+  CLI::Option* fraction_option =
+      c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
+          ->capture_default_str();
   c->add_option("--top", ends->first, "top end: disc (hub + pleated band, pulled) or open")
       ->capture_default_str();
   c->add_option("--base", ends->second, "base end: disc (its hub clamped) or open")
@@ -267,9 +292,15 @@ void register_cone(CLI::App* gen) {
       "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
       "that brings every other generator onto the axis (open ends only; no facets coincide, "
       "contact on); a base facet pulled back out");
+  auto fold_gather = std::make_shared<double>(-1);
+  CLI::Option* fold_gather_option = c->add_option(
+      "--fold-to-gathered", *fold_gather,
+      "start from the deployed cone and let `finseg run --fold` gather it by simulation, share "
+      "[0, 1) as for --gathered (open ends only; static solver, --fold-steps or 20 load steps); "
+      "deploy from its checkpoint with --state: a base facet pulled back to its deployed place");
   add_sheet_options(c, *o);
-  c->callback([o, s, angles, fraction, ends, fold_steps, stowed, stowed_option, gathered,
-               gathered_option, inflate] {
+  c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
+               gathered, gathered_option, inflate, fold_gather, fold_gather_option] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
@@ -299,25 +330,46 @@ void register_cone(CLI::App* gen) {
       throw InputError("<cli>", "--gathered", fmt::format("{}; allowed [0, 1)", *gathered));
     }
     if (*inflate && !from_gathered) throw InputError("<cli>", "--inflate", "needs --gathered");
+    const bool to_gathered = fold_gather_option->count() > 0;
+    if (to_gathered && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", "--fold-to-gathered", "needs --top open --base open");
+    }
+    if (to_gathered && (from_gathered || from_stack)) {
+      throw InputError("<cli>", "--fold-to-gathered", "not with --gathered or --stowed");
+    }
+    if (to_gathered && !(*fold_gather >= 0 && *fold_gather < 1)) {
+      throw InputError("<cli>", "--fold-to-gathered",
+                       fmt::format("{}; allowed [0, 1)", *fold_gather));
+    }
+    if (to_gathered && fraction_option->count() > 0) {
+      throw InputError("<cli>", "--fold-fraction",
+                       "not with --fold-to-gathered (its share says how far the wall gathers)");
+    }
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
     if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
     const std::vector<Vec3> deployed = p.vertices_folded_m;
     if (from_gathered) gather_pattern(*s, p, *gathered);
+    const std::vector<Vec3> gathered_x =
+        to_gathered ? target_gathered(*s, p, *fold_gather) : std::vector<Vec3>{};
     // Clamped: the base hub, else the base band's wedge 1 (the first whole facet). Pulled:
     // the top hub, else the top band's facet across the axis from that (wedge pleats + 1).
     // From the fan stack: the top band's wedge 1 clamped, the base band's pulled away from
     // the apex along the stack's middle (+x).
     // Gathered: the top band's wedge 1 clamped, the base band's facet across the axis from it
     // pulled radially out to where it sits on the deployed cone.
-    const int clamped = from_stack || from_gathered ? cone_face(*s, 0, 1)
-                        : s->base_disc              ? cone_hub_face(*s, false)
-                                                    : cone_face(*s, s->axial_folds, 1);
-    const int pulled = from_stack      ? cone_face(*s, s->axial_folds, 1)
-                       : from_gathered ? cone_face(*s, s->axial_folds, s->pleats + 1)
-                       : s->top_disc   ? cone_hub_face(*s, true)
-                                       : cone_face(*s, 0, s->pleats + 1);
+    // Folded to gathered: as gathered, the facet pulled back to where it is deployed from where
+    // the folding run leaves it (the gathered wall moved rigidly so that the clamped face,
+    // held during the folding, is where it is deployed).
+    const bool gathers = from_gathered || to_gathered;
+    const int clamped = from_stack || gathers ? cone_face(*s, 0, 1)
+                        : s->base_disc        ? cone_hub_face(*s, false)
+                                              : cone_face(*s, s->axial_folds, 1);
+    const int pulled = from_stack    ? cone_face(*s, s->axial_folds, 1)
+                       : gathers     ? cone_face(*s, s->axial_folds, s->pleats + 1)
+                       : s->top_disc ? cone_hub_face(*s, true)
+                                     : cone_face(*s, 0, s->pleats + 1);
     std::string direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
     double travel = 0.8 * s->height;
     if (from_gathered) {
@@ -328,6 +380,15 @@ void register_cone(CLI::App* gen) {
       travel = Vec2(there.x(), there.y()).norm() - out.norm();
     }
     const Vec2 top = face_centroid(p, pulled);
+    if (to_gathered) {
+      const RigidFit held = best_rigid_fit(face_points(gathered_x, p.faces[clamped]),
+                                           face_points(deployed, p.faces[clamped]));
+      const Vec3 back =
+          placed(p, deployed, pulled, top) - held.apply(placed(p, gathered_x, pulled, top));
+      travel = back.norm();
+      direction = fmt::format("[{:.9g}, {:.9g}, {:.9g}]", back.x() / travel, back.y() / travel,
+                              back.z() / travel);
+    }
     // Contact stiffness from the thickness and the load (docs/folding.md, "Contact
     // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
     // it a quarter of the thickness.
@@ -335,9 +396,11 @@ void register_cone(CLI::App* gen) {
     const double contact_stiffness = most_force / std::pow(0.25 * o->thickness, 1.5);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
+    // Gathering is a rigid motion: the static solver lands on it (docs/folding.md).
+    const int load_steps = *fold_steps > 0 ? *fold_steps : to_gathered ? 20 : 0;
     const std::string folding_solver =
-        *fold_steps > 0
-            ? fmt::format("{{type: static, load_steps: {}, max_iterations: 50}}", *fold_steps)
+        load_steps > 0
+            ? fmt::format("{{type: static, load_steps: {}, max_iterations: 50}}", load_steps)
             : std::string("{type: implicit, t_end: 1.2, output_interval: 0.02, dt_max: 0.01}");
     const std::string how_to_run =
         from_gathered
@@ -348,6 +411,14 @@ void register_cone(CLI::App* gen) {
                   "(docs/contact.md).\n"
                   "# Pull it open (contact on): finseg run {} --out deploy\n",
                   *gathered, scene_name)
+        : to_gathered
+            ? fmt::format(
+                  "# Fold it: the static solver gathers the wall ({:g} of the way to every other "
+                  "generator on the axis):\n"
+                  "#   finseg run {} --fold --out folded\n"
+                  "# Deploy it by pulling a base facet back to its deployed place (contact on):\n"
+                  "#   finseg run {} --state folded/checkpoint.json --out deploy\n",
+                  *fold_gather, scene_name, scene_name)
         : from_stack
             ? fmt::format(
                   "# Starts stowed: the fan stack Z-folded to {:g} deg, its layers coinciding;\n"
@@ -376,7 +447,7 @@ void register_cone(CLI::App* gen) {
         "  solver: {}\n"
         "drives:\n"
         "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
-        "     travel: {:.6g}, step: {:.6g}, speed: {:.6g}}}\n"
+        "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
         "probes:\n"
         "  - {{name: top, type: drive, drive: top}}\n"
         "  - {{name: energy, type: energy}}\n"
@@ -390,14 +461,15 @@ void register_cone(CLI::App* gen) {
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
         ends->second, how_to_run,
         from_gathered ? "gathered cone, a base facet pulled back out"
+        : to_gathered ? "cone gathered by folding, a base facet pulled back out"
                       : "folded cone pulled open by its top",
         sheet_sections(*o, fold_file), clamped + 1,
-        from_stack || from_gathered ? "one face of the top band"
-        : s->base_disc              ? "the base disc's hub"
-                                    : "one face of the base band",
-        most_force, contact_stiffness,
-        from_stack || from_gathered ? " initial_overlap: ignore," : "", *fraction, folding_solver,
-        top.x(), top.y(), direction, gauge, travel, travel / 100, travel);
+        from_stack || gathers ? "one face of the top band"
+        : s->base_disc        ? "the base disc's hub"
+                              : "one face of the base band",
+        most_force, contact_stiffness, from_stack || gathers ? " initial_overlap: ignore," : "",
+        to_gathered ? 1.0 : *fraction, folding_solver, top.x(), top.y(), direction, gauge, travel,
+        travel / 100, travel);
     if (!*inflate) {
       write_pair(*o, p, yaml);
       return;

@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/rigid_fit.hpp"
 #include "core/text.hpp"
 #include "elements/crease_law.hpp"
 #include "elements/crease_laws/scaled.hpp"
@@ -109,22 +109,12 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
 // Rigid motion (R, p) taking the flat points (x, y, 0) nearest to the folded ones (Kabsch).
 void fit_pose(const std::vector<Vec2>& flat, const std::vector<Vec3>& folded, const Vec2& c_flat,
               Mat3& R, Vec3& p) {
-  Vec3 a = Vec3::Zero(), b = Vec3::Zero();
-  for (std::size_t k = 0; k < flat.size(); ++k) {
-    a += Vec3(flat[k].x(), flat[k].y(), 0);
-    b += folded[k];
-  }
-  a /= static_cast<double>(flat.size());
-  b /= static_cast<double>(flat.size());
-  Mat3 H = Mat3::Zero();
-  for (std::size_t k = 0; k < flat.size(); ++k) {
-    H += (Vec3(flat[k].x(), flat[k].y(), 0) - a) * (folded[k] - b).transpose();
-  }
-  const Eigen::JacobiSVD<Mat3> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Mat3 D = Mat3::Identity();
-  D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1 : 1;
-  R = svd.matrixV() * D * svd.matrixU().transpose();
-  p = b + R * (Vec3(c_flat.x(), c_flat.y(), 0) - a);
+  std::vector<Vec3> flat3;
+  flat3.reserve(flat.size());
+  for (const Vec2& x : flat) flat3.emplace_back(x.x(), x.y(), 0);
+  const RigidFit fit = best_rigid_fit(flat3, folded);
+  R = fit.R;
+  p = fit.apply(Vec3(c_flat.x(), c_flat.y(), 0));
 }
 
 // The law of a crease side by its pattern edge (index `index`, -1 for a seam), or null for a
