@@ -377,14 +377,16 @@ TEST(CliRunSafety, ProgressLinesWhenStderrIsNotATerminal) {
   EXPECT_EQ(r.err, "");
 }
 
-// A static load-only run reports its load steps, not only its end.
+// A static load-only run reports its load steps, not only its end: the load reached (not the
+// last output's, which stays at 0 until the end) and the Newton iterations so far.
 TEST(CliRunSafety, StaticLoadSteppingReportsProgress) {
   TempDir dir;
   write_cantilever(dir, "static", 1);
   replace_line(dir / "c.yaml", "load_steps: 1", "load_steps: 4");
   const auto r = run_finseg(dir, "run c.yaml --out out --progress-every 0");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("finseg: [ 25.0%] load 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("finseg: [ 25.0%] load 0.25, "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" Newton iterations, 1 outputs"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("finseg: [100.0%] load 1"), std::string::npos) << r.err;
 }
 

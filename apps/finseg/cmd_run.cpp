@@ -79,9 +79,18 @@ std::string where(const RunRecorder& rec, const State& now) {
   return where(rec, rec.abscissa() == "t_s" ? now.t : rec.last_abscissa());
 }
 
-// The progress line: where the run is and, for the dynamic solvers, its step and counts (a
-// large model may take minutes from one output to the next).
+// The progress line: where the run is and, for the dynamic solvers and static load stepping,
+// its counts (a large model may take minutes from one output to the next; a folding run by
+// the static solver has outputs only at its start and end).
 std::string progress_text(const RunRecorder& rec, const SolverProgress& p) {
+  if (p.stats != nullptr && rec.abscissa() == "load_scale") {
+    std::string s =
+        fmt::format("{}, {} Newton iterations", where(rec, p.t), p.stats->newton_iterations);
+    if (p.stats->rejected_steps > 0) {
+      s += fmt::format(" ({} load increments cut)", p.stats->rejected_steps);
+    }
+    return s + fmt::format(", {} outputs", rec.outputs());
+  }
   if (p.stats == nullptr || rec.abscissa() != "t_s") {
     return fmt::format("{}, {} outputs", where(rec), rec.outputs());
   }
