@@ -3,7 +3,8 @@
 // gathered state's fold angles, and the static solver lands on the geometric gathered wall
 // (`cone_gathered`, checked against the cone's closed form in test_cone_pattern.cpp) up to the
 // rigid motion that keeps the clamped face in place; the generated drive then draws the pulled
-// facet from where the fold leaves it back to its deployed place.
+// facet from where the fold leaves it back to its deployed place. The static solver gets there
+// in a few hundred Newton iterations, not thousands (solvers/stiff_projection.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,6 +46,10 @@ TEST(ConeFoldGathered, StaticFoldLandsOnTheGatheredWallAndTheDriveLeadsBack) {
                        "--set outputs.html=false --set outputs.plot=false");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<Vec3> folded = checkpoint_centroids(dir / "folded/checkpoint.json");
+  // The static solver follows the closed loop of facets with its projected trials
+  // (solvers/stiff_projection.hpp): 169 Newton iterations; 1 458 without them.
+  const nlohmann::json summary = nlohmann::json::parse(test::slurp(dir / "folded/summary.json"));
+  EXPECT_LT(summary.at("stats").at("newton_iterations").get<int>(), 500);
   const Scene gathered = read_scene(dir / "g.yaml");
   const std::vector<Vec3> reference = initial_state(gathered.model).p_W;
   ASSERT_EQ(folded.size(), reference.size());
