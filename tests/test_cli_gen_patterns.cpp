@@ -137,6 +137,13 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   expect_refused(dir, "gen cone --fold-steps -1 --out l.yaml", "--fold-steps");
   expect_refused(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml", "--top-radius");
   expect_refused(dir, "gen miura --sector-angle 95 --out e.yaml", "--sector-angle");
+  expect_refused(dir, "gen miura --fold-angle 0 --out e.yaml", "--fold-angle");  // nothing to fold
+  // A sheet folded less than the 15 degrees the pull opens it to is opened to half its fold
+  // angle (the scene's travel was negative, refused by the reader).
+  r = run_finseg(dir, "gen miura --fold-angle 1 --out m1.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "inspect m1.yaml");
+  EXPECT_EQ(r.code, 0) << r.err;
 }
 
 }  // namespace cli_gen_patterns_test

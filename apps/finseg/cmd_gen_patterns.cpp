@@ -136,20 +136,27 @@ void register_miura(CLI::App* gen) {
   add_sheet_options(c, *o);
   c->callback([o, s, angles] {
     check_sheet(*o);
+    if (!(angles->second > 0)) {  // (the pattern alone may be flat: `finseg pattern miura`)
+      throw InputError("<cli>", "--fold-angle",
+                       fmt::format("{} deg; allowed (0, 90): the scene folds the sheet and pulls "
+                                   "it open",
+                                   angles->second));
+    }
     s->sector_angle = angles->first * kDegToRad;
     s->fold_angle = angles->second * kDegToRad;
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = miura_crease_pattern(*s); }, kCliNames);
     // Face 1 (row 0, column 0) clamped; the last column's first face pulled along +x until
-    // the sheet is open to 15 degrees.
+    // the sheet is open to 15 degrees (a sheet folded less: to half its fold angle).
     const Vec2 pulled = face_centroid(p, s->columns - 1);
     // Along the first row's crease line (x of Schenk and Guest's frame): two columns on.
     const Vec3 along = s->columns >= 2
                            ? (p.vertices_folded_m[2] - p.vertices_folded_m[0]).normalized()
                            : Vec3(p.vertices_folded_m[1] - p.vertices_folded_m[0]).normalized();
+    const double open_to = std::min(15 * kDegToRad, 0.5 * s->fold_angle);
     const double travel =
-        (s->columns - 1) * (miura_cell(*s, 15 * kDegToRad).S - miura_cell(*s, s->fold_angle).S);
+        (s->columns - 1) * (miura_cell(*s, open_to).S - miura_cell(*s, s->fold_angle).S);
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
     const std::string yaml = fmt::format(
         "# finseg gen miura: {} x {} parallelograms {:g} x {:g} m, sector angle {:g} deg, folded "
