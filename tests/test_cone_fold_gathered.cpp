@@ -2,9 +2,10 @@
 // "The cone gathered by folding"): `finseg run --fold` carries the deployed wall's creases to the
 // gathered state's fold angles, and the static solver lands on the geometric gathered wall
 // (`cone_gathered`, checked against the cone's closed form in test_cone_pattern.cpp) up to the
-// rigid motion that keeps the clamped face in place; the generated drive then draws the pulled
-// facet from where the fold leaves it back to its deployed place. The static solver gets there
-// in a few hundred Newton iterations, not thousands (solvers/stiff_projection.hpp).
+// rigid motion that keeps the clamped face in place; the generated pull is --gathered's turned
+// with the wall, and from the fold's checkpoint it gives the --gathered start's force curve.
+// The static solver gets there in a few hundred Newton iterations, not thousands
+// (solvers/stiff_projection.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,18 +33,23 @@ std::vector<Vec3> checkpoint_centroids(const std::string& path) {
   return p;
 }
 
+// `finseg run ARGS` in `dir` with the files a test does not read off.
+test::CliResult run_quietly(const test::TempDir& dir, const std::string& args) {
+  return test::run_finseg(dir, "run " + args +
+                                   " --quiet --set outputs.vtk=false --set outputs.html=false "
+                                   "--set outputs.plot=false");
+}
+
 constexpr const char* kCone =
     "gen cone --top open --base open --pleats 3 --axial-folds 1 --subdivisions 1 ";
 
-TEST(ConeFoldGathered, StaticFoldLandsOnTheGatheredWallAndTheDriveLeadsBack) {
+TEST(ConeFoldGathered, StaticFoldLandsOnTheGatheredWallAndDeploysAsTheGatheredStart) {
   test::TempDir dir;
   auto r = test::run_finseg(dir, std::string(kCone) + "--fold-to-gathered 0.9 --out c.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   r = test::run_finseg(dir, std::string(kCone) + "--gathered 0.9 --out g.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
-  r = test::run_finseg(dir,
-                       "run c.yaml --fold --out folded --quiet --set outputs.vtk=false "
-                       "--set outputs.html=false --set outputs.plot=false");
+  r = run_quietly(dir, "c.yaml --fold --out folded");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<Vec3> folded = checkpoint_centroids(dir / "folded/checkpoint.json");
   // The static solver follows the closed loop of facets with its projected trials
@@ -69,18 +75,32 @@ TEST(ConeFoldGathered, StaticFoldLandsOnTheGatheredWallAndTheDriveLeadsBack) {
     farthest = std::max(farthest, (to_deployed.apply(deployed[i]) - folded[i]).norm());
   }
   EXPECT_GT(farthest, 0.02);
-  // ... and the drive's travel along its direction takes its point (the pulled face's
-  // centroid, one segment per face) from the folded place to the deployed one.
+  // ... and the deploy scene pulls as --gathered's does, turned with the wall: from the
+  // folded state its force curve is the gathered start's.
   ASSERT_EQ(deploy.model.drives.size(), 1u);
-  const DriveDef& d = deploy.model.drives[0];
-  double nearest = INFINITY;
-  std::size_t pulled = 0;
-  for (std::size_t i = 0; i < deployed.size(); ++i) {
-    const double gap = (deployed[i] - d.start_W).norm();
-    if (gap < nearest) nearest = gap, pulled = i;
+  ASSERT_EQ(gathered.model.drives.size(), 1u);
+  const DriveDef &d = deploy.model.drives[0], &g = gathered.model.drives[0];
+  EXPECT_LT((fit.R * g.direction_W - d.direction_W).norm(), 1e-8);  // the scenes' 9 digits
+  EXPECT_NEAR(d.travel, g.travel, 1e-8);
+  r = run_quietly(dir, "c.yaml --state folded/checkpoint.json --out deploy");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_quietly(dir, "g.yaml --out pull");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string header;
+  const auto from_fold = test::csv_rows(test::slurp(dir / "deploy/top.csv"), &header);
+  const auto from_geometry = test::csv_rows(test::slurp(dir / "pull/top.csv"), &header);
+  ASSERT_EQ(from_fold.size(), from_geometry.size());
+  double largest = 0, apart = 0;
+  for (std::size_t k = 0; k < from_fold.size(); ++k) {
+    EXPECT_NEAR(from_fold[k][0], from_geometry[k][0], 1e-9);     // the same pull displacements
+    largest = std::max(largest, std::abs(from_geometry[k][1]));  // force_N
+    apart = std::max(apart, std::abs(from_fold[k][1] - from_geometry[k][1]));
   }
-  ASSERT_LT(nearest, 1e-8);  // the scene's 9 significant digits
-  EXPECT_LT((folded[pulled] + d.travel * d.direction_W - deployed[pulled]).norm(), 1e-8);
+  EXPECT_GT(largest, 0.05);  // N: the pull does work
+  // Measured 4.7e-5 N (6e-4 of 0.079 N), whatever the tolerances (rtol 1e-4 or 1e-6,
+  // newton_tolerance 0.1 to 1e-5: 3.3e-5 N): a small systematic difference between the model
+  // built on the deployed coordinates and the one built on the gathered ones, not the solver's.
+  EXPECT_LT(apart, 1e-3 * largest);
 }
 
 TEST(ConeFoldGathered, BadOptionsAreRefused) {

@@ -220,14 +220,6 @@ std::vector<Vec3> face_points(const std::vector<Vec3>& x, const std::vector<int>
   return out;
 }
 
-// Where the point `flat` of rigid face `face` lies with the pattern's vertices at `x`.
-Vec3 placed(const CreasePattern& p, const std::vector<Vec3>& x, int face, const Vec2& flat) {
-  std::vector<Vec3> from;
-  for (int v : p.faces[face])
-    from.emplace_back(p.vertices_flat_m[v].x(), p.vertices_flat_m[v].y(), 0);
-  return best_rigid_fit(from, face_points(x, p.faces[face])).apply(Vec3(flat.x(), flat.y(), 0));
-}
-
 // Fixed end plates closing wall ring `ring` (0: the top): a fan of triangles from the ring's
 // centre, counter-clockwise seen from outside the cone (from above at the top).
 std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, bool top) {
@@ -304,7 +296,7 @@ void register_cone(CLI::App* gen) {
       "--fold-to-gathered", *fold_gather,
       "start from the deployed cone and let `finseg run --fold` gather it by simulation, share "
       "[0, 1) as for --gathered (open ends only; static solver, --fold-steps or 20 load steps); "
-      "deploy from its checkpoint with --state: a base facet pulled back to its deployed place");
+      "deploy from its checkpoint with --state: a base facet pulled back out as for --gathered");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
                gathered, gathered_option, inflate, fold_gather, fold_gather_option] {
@@ -366,9 +358,7 @@ void register_cone(CLI::App* gen) {
     // the apex along the stack's middle (+x).
     // Gathered: the top band's wedge 1 clamped, the base band's facet across the axis from it
     // pulled radially out to where it sits on the deployed cone.
-    // Folded to gathered: as gathered, the facet pulled back to where it is deployed from where
-    // the folding run leaves it (the gathered wall moved rigidly so that the clamped face,
-    // held during the folding, is where it is deployed).
+    // Folded to gathered: as gathered, from where the folding run leaves the wall.
     const bool gathers = from_gathered || to_gathered;
     const int clamped = from_stack || gathers ? cone_face(*s, 0, 1)
                         : s->base_disc        ? cone_hub_face(*s, false)
@@ -379,23 +369,25 @@ void register_cone(CLI::App* gen) {
                                      : cone_face(*s, 0, s->pleats + 1);
     std::string direction = from_stack ? "[1, 0, 0]" : "[0, 0, 1]";
     double travel = 0.8 * s->height;
-    if (from_gathered) {
-      const Vec3 now = folded_centroid(p.vertices_folded_m, p.faces[pulled]),
+    if (gathers) {
+      // Radially out in the gathered wall's frame; folded to gathered, that frame is where
+      // the folding run leaves the wall (moved rigidly so that the clamped face, held during
+      // the folding, is where it is deployed): the same pull as --gathered's.
+      const std::vector<Vec3>& at = from_gathered ? p.vertices_folded_m : gathered_x;
+      const Vec3 now = folded_centroid(at, p.faces[pulled]),
                  there = folded_centroid(deployed, p.faces[pulled]);
       const Vec2 out(now.x(), now.y());
-      direction = fmt::format("[{:.9g}, {:.9g}, 0]", out.x() / out.norm(), out.y() / out.norm());
+      Vec3 radial(out.x() / out.norm(), out.y() / out.norm(), 0);
+      if (to_gathered) {
+        radial = best_rigid_fit(face_points(gathered_x, p.faces[clamped]),
+                                face_points(deployed, p.faces[clamped]))
+                     .R *
+                 radial;
+      }
+      direction = fmt::format("[{:.9g}, {:.9g}, {:.9g}]", radial.x(), radial.y(), radial.z());
       travel = Vec2(there.x(), there.y()).norm() - out.norm();
     }
     const Vec2 top = face_centroid(p, pulled);
-    if (to_gathered) {
-      const RigidFit held = best_rigid_fit(face_points(gathered_x, p.faces[clamped]),
-                                           face_points(deployed, p.faces[clamped]));
-      const Vec3 back =
-          placed(p, deployed, pulled, top) - held.apply(placed(p, gathered_x, pulled, top));
-      travel = back.norm();
-      direction = fmt::format("[{:.9g}, {:.9g}, {:.9g}]", back.x() / travel, back.y() / travel,
-                              back.z() / travel);
-    }
     // Contact stiffness from the thickness and the load (docs/folding.md, "Contact
     // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
     // it a quarter of the thickness.
@@ -423,7 +415,7 @@ void register_cone(CLI::App* gen) {
                   "# Fold it: the static solver gathers the wall ({:g} of the way to every other "
                   "generator on the axis):\n"
                   "#   finseg run {} --fold --out folded\n"
-                  "# Deploy it by pulling a base facet back to its deployed place (contact on):\n"
+                  "# Deploy it by pulling a base facet back out (contact on):\n"
                   "#   finseg run {} --state folded/checkpoint.json --out deploy\n",
                   *fold_gather, scene_name, scene_name)
         : from_stack
