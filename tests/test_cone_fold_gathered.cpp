@@ -103,6 +103,67 @@ TEST(ConeFoldGathered, StaticFoldLandsOnTheGatheredWallAndDeploysAsTheGatheredSt
   EXPECT_LT(apart, 1e-3 * largest);
 }
 
+// Gathering is a rigid motion of the facets: folded on the cut of one segment a face and
+// carried onto the cut of four (folding.coarse_subdivisions, generators/state_refinement.hpp),
+// the fine wall is the geometric gathered one and already the fine model's equilibrium.
+TEST(ConeFoldGathered, FoldOnTheCoarseCutCarriedOntoTheFineOneIsTheGatheredWall) {
+  test::TempDir dir;
+  const std::string cone =
+      "gen cone --top open --base open --pleats 3 --axial-folds 1 --subdivisions 2 ";
+  auto r = test::run_finseg(dir, cone + "--fold-to-gathered 0.9 --out c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = test::run_finseg(dir, cone + "--gathered 0.9 --out g.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_quietly(dir, "c.yaml --fold --out folded --set folding.coarse_subdivisions=1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<Vec3> folded = checkpoint_centroids(dir / "folded/checkpoint.json");
+  const std::vector<Vec3> reference = initial_state(read_scene(dir / "g.yaml").model).p_W;
+  ASSERT_EQ(folded.size(), reference.size());
+  ASSERT_GT(folded.size(), 14u);  // finer than the coarse cut's 14 segments
+  const RigidFit fit = best_rigid_fit(reference, folded);
+  for (std::size_t i = 0; i < folded.size(); ++i) {
+    EXPECT_LT((fit.apply(reference[i]) - folded[i]).norm(), 1e-9) << "segment " << i;
+  }
+  // The fine run only confirms the equilibrium it is carried to (measured: 1; the centres 1.5e-15 m
+  // from the geometric wall).
+  const nlohmann::json summary = nlohmann::json::parse(test::slurp(dir / "folded/summary.json"));
+  EXPECT_LE(summary.at("stats").at("newton_iterations").get<int>(), 3);
+}
+
+// Finer than 2 x 2 a face the generator folds on 2 x 2 (at 7 x 7 the direct fold crept).
+TEST(ConeFoldGathered, GeneratedFineScenesFoldOnTwoByTwo) {
+  test::TempDir dir;
+  for (const auto& [n, coarse] : {std::pair{2, 0}, {3, 2}}) {
+    const auto r = test::run_finseg(
+        dir,
+        "gen cone --top open --base open --pleats 3 --axial-folds 1 --fold-to-gathered 0.9 "
+        "--subdivisions " +
+            std::to_string(n) + " --out c.yaml");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const Scene scene = read_scene(dir / "c.yaml");
+    ASSERT_TRUE(scene.folding.has_value());
+    EXPECT_EQ(scene.folding->coarse_subdivisions, coarse) << n << " x " << n;
+  }
+}
+
+TEST(ConeFoldGathered, CoarseFoldsThatCannotBeMadeAreRefused) {
+  test::TempDir dir;
+  auto r = test::run_finseg(dir, std::string(kCone) + "--fold-to-gathered 0.9 --out c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string fold = "run c.yaml --fold --out f --quiet --set ";
+  // Not coarser than the scene's own cut (pattern.subdivisions 1 here).
+  test::expect_refused(dir, fold + "folding.coarse_subdivisions=1", "folding.coarse_subdivisions");
+  test::expect_refused(dir, fold + "pattern.subdivisions=2 --set folding.coarse_subdivisions=2",
+                       "folding.coarse_subdivisions");
+  test::expect_refused(dir, fold + "folding.coarse_subdivisions=-1", "folding.coarse_subdivisions");
+  // A dynamic fold ramps its rest angles from the start: it cannot begin at the stowed poses.
+  test::expect_refused(dir,
+                       fold +
+                           "pattern.subdivisions=2 --set folding.coarse_subdivisions=1 --set "
+                           "folding.solver.type=implicit",
+                       "folding.coarse_subdivisions");
+}
+
 TEST(ConeFoldGathered, BadOptionsAreRefused) {
   test::TempDir dir;
   for (const auto& [bad, named] :

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "apps/finseg/commands.hpp"
+#include "apps/finseg/folding_run.hpp"
 #include "apps/finseg/progress.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
@@ -163,18 +164,6 @@ State start_scene_from_state_file(const RunOptions& o, Scene& scene) {
   return start;
 }
 
-// `finseg run --fold`: the scene's folding (docs/folding.md) in place of its run.
-void make_folding_run(Scene& scene) {
-  if (!scene.folding) {
-    throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
-  }
-  const SolverSettings& solver = scene.folding_solver;
-  const double ramp = solver.kind == SolverKind::Static ? 1.0 : scene.folding->duration;
-  scene.model =
-      folding_model(scene.model, initial_state(scene.model), scene.folding->fraction, ramp);
-  scene.solver = solver;
-}
-
 // Periodic checkpoints from the output callback; a checkpoint that cannot be written is a
 // warning (the run goes on and still writes its results).
 class Checkpointer {
@@ -230,7 +219,15 @@ void run_scene(const RunOptions& o) {
   // From a state file first, so that a folding run folds on from there.
   std::optional<State> from_file;
   if (!o.state_file.empty() && !o.resume) from_file = start_scene_from_state_file(o, scene);
-  if (o.fold) make_folding_run(scene);
+  if (o.fold) {
+    if (from_file && scene.folding && scene.folding->coarse_subdivisions > 0) {
+      throw InputError(o.state_file, "--state",
+                       "not with folding.coarse_subdivisions (the coarse cut folds from the "
+                       "scene's start)");
+    }
+    std::optional<State> carried = make_folding_run(scene, o.quiet);
+    if (carried && !o.resume) from_file = carried;
+  }
   check_output_folder(o.out, scene);
   RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
   State state = from_file ? *from_file : starting_state(o, scene, hash, rec);

@@ -12,6 +12,9 @@ namespace finseg {
 struct FoldingSpec {
   double fraction = 1.0;  ///< share of each crease's target angle folded to, (0, 1]
   double duration = 1.0;  ///< s over which the rest angles move (dynamic solvers), > 0
+  /// Fold a coarser segmentation of the same pattern (its pattern.subdivisions) first and
+  /// carry its stowed poses onto this one (generators/state_refinement.hpp); 0: fold this one.
+  int coarse_subdivisions = 0;
 };
 
 /// The model of the folding run: every crease with a target fold angle gets its law moved

@@ -68,12 +68,29 @@ SolverSettings read_solver_section(const Fields& root) {
 
 void read_folding_section(const Fields& root, Scene& scene) {
   if (!root.has("folding")) return;
-  const Fields f(root.node("folding"), root.context("folding"), {"fraction", "duration", "solver"});
+  const Fields f(root.node("folding"), root.context("folding"),
+                 {"fraction", "duration", "solver", "coarse_subdivisions"});
   FoldingSpec s;
   s.fraction = f.number("fraction", s.fraction, interval(0, 1, true, false));
   s.duration = f.number("duration", s.duration, positive("s"));
+  s.coarse_subdivisions = f.integer("coarse_subdivisions", 0, 0, 63);
+  if (s.coarse_subdivisions > 0) {
+    // A coarser cut of the same pattern: only a pattern cut by subdivisions has one.
+    const YAML::Node pattern = root.node("pattern");
+    if (!pattern || pattern["segment_size"]) {
+      f.fail("coarse_subdivisions", "needs a pattern: section cut by subdivisions");
+    }
+    const int fine = pattern["subdivisions"] ? pattern["subdivisions"].as<int>() : 2;
+    if (fine < 2) f.fail("coarse_subdivisions", "needs pattern.subdivisions of 2 or more");
+    s.coarse_subdivisions = f.integer("coarse_subdivisions", 0, 0, fine - 1);
+  }
   scene.folding = s;
   scene.folding_solver = read_solver_section(f);
+  // The fine run starts where the coarse fold ends, at the end of the rest angles' ramp: a
+  // load scale the static solver can start at, not a time a dynamic one would ramp from.
+  if (s.coarse_subdivisions > 0 && scene.folding_solver.kind != SolverKind::Static) {
+    f.fail("coarse_subdivisions", "needs the static folding solver (folding.solver.type: static)");
+  }
   bool any_target = false;
   for (const CreaseDef& c : scene.model.creases)
     any_target = any_target || c.target_fold_angle != 0;

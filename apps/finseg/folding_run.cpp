@@ -1,0 +1,81 @@
+#include "apps/finseg/folding_run.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "apps/finseg/progress.hpp"
+#include "core/error.hpp"
+#include "generators/folding.hpp"
+#include "generators/state_refinement.hpp"
+#include "solvers/solver.hpp"
+
+namespace finseg::cli {
+
+namespace {
+
+// The static solver's rest angles reach their targets at load 1; a dynamic one's at the
+// folding's duration.
+double ramp_of(const Scene& scene) {
+  return scene.folding_solver.kind == SolverKind::Static ? 1.0 : scene.folding->duration;
+}
+
+// The fold solved on the pattern cut into `coarse_subdivisions` (the same scene file and
+// --set changes otherwise), carried onto `scene`'s segments.
+State fold_on_coarse_cut(const Scene& scene, bool quiet) {
+  const int n = scene.folding->coarse_subdivisions;
+  std::vector<Override> overrides = scene.overrides;
+  overrides.push_back({"pattern.subdivisions", std::to_string(n)});
+  overrides.push_back({"folding.coarse_subdivisions", "0"});
+  Scene coarse = read_scene(scene.file, overrides);
+  const double fraction = scene.folding->fraction;
+  coarse.model = folding_model(coarse.model, initial_state(coarse.model), fraction, ramp_of(scene));
+  State state = initial_state(coarse.model);
+  SolverProgress now;
+  ProgressLine progress(
+      progress_mode(quiet),
+      [&] {
+        return fmt::format("folding on the coarse cut ({} segments, pattern.subdivisions {})",
+                           coarse.model.bodies.size(), n);
+      },
+      5.0);
+  const auto start = std::chrono::steady_clock::now();
+  const SolverStats stats = run_solver(
+      coarse.model, state, scene.folding_solver, [](const State&, const BodyForces&) {},
+      [&](const SolverProgress& p) { progress.update(p.fraction); });
+  progress.finish();
+  if (stats.status != "ok") {
+    throw DivergenceError(
+        fmt::format("the fold on the coarse cut (pattern.subdivisions {}): {}", n, stats.message));
+  }
+  if (!quiet) {
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print(stderr,
+               "finseg: folded on the coarse cut: {} segments, {} Newton iterations, wall {:.3g} "
+               "s; carried onto {} segments\n",
+               coarse.model.bodies.size(), stats.newton_iterations, wall,
+               scene.model.bodies.size());
+  }
+  return refine_state(coarse.model, state, scene.model, fraction);
+}
+
+}  // namespace
+
+std::optional<State> make_folding_run(Scene& scene, bool quiet) {
+  if (!scene.folding) {
+    throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
+  }
+  std::optional<State> start;
+  if (scene.folding->coarse_subdivisions > 0) start = fold_on_coarse_cut(scene, quiet);
+  scene.model = folding_model(scene.model, initial_state(scene.model), scene.folding->fraction,
+                              ramp_of(scene));
+  scene.solver = scene.folding_solver;
+  // The carried poses are the fold's end: the fine model's equilibrium there, in one increment.
+  if (start) scene.solver.load_steps = 1;
+  return start;
+}
+
+}  // namespace finseg::cli
