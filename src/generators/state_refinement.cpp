@@ -1,42 +1,61 @@
 #include "generators/state_refinement.hpp"
 
 #include <limits>
+#include <map>
+#include <vector>
 
 #include "core/error.hpp"
 #include "model/segment_shape.hpp"
 
 namespace finseg {
 
-int carrying_body(const Model& coarse, const BodyDef& b) {
-  if (!b.centroid_M) {
-    throw InputError(coarse.source, "bodies", "a refined state needs segments cut from a sheet");
-  }
-  int best = -1;
-  double nearest = std::numeric_limits<double>::infinity();
-  for (size_t c = 0; c < coarse.bodies.size(); ++c) {
-    const BodyDef& cb = coarse.bodies[c];
-    if (cb.panel != b.panel || !cb.centroid_M) continue;
-    if (polygon_contains(material_outline(cb), *b.centroid_M, 0)) return static_cast<int>(c);
-    const double d = (*cb.centroid_M - *b.centroid_M).norm();
-    if (d < nearest) nearest = d, best = static_cast<int>(c);
-  }
-  if (best < 0) {
+namespace {
+
+// The coarse segment that carries fine segment `b`: of `face`'s (the coarse segments on b's
+// face), the one whose material outline holds b's centre, else the nearest.
+int carrying_body(const Model& coarse, const std::vector<int>& face, const BodyDef& b) {
+  if (face.empty()) {
     throw InputError(coarse.source, "bodies",
                      "face " + std::to_string(b.panel + 1) + " has no segment in the coarse model");
+  }
+  int best = face.front();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int c : face) {
+    const BodyDef& cb = coarse.bodies[static_cast<size_t>(c)];
+    if (polygon_contains(material_outline(cb), *b.centroid_M, 0)) return c;
+    const double d = (*cb.centroid_M - *b.centroid_M).norm();
+    if (d < nearest) nearest = d, best = c;
   }
   return best;
 }
 
+// The segments of each face (BodyDef::panel) cut from a sheet.
+std::map<int, std::vector<int>> segments_by_face(const Model& m) {
+  std::map<int, std::vector<int>> faces;
+  for (size_t i = 0; i < m.bodies.size(); ++i) {
+    if (!m.bodies[i].centroid_M) {
+      throw InputError(m.source, "bodies", "a refined state needs segments cut from a sheet");
+    }
+    faces[m.bodies[i].panel].push_back(static_cast<int>(i));
+  }
+  return faces;
+}
+
+}  // namespace
+
 State refine_state(const Model& coarse, const State& coarse_state, const Model& fine,
                    double fraction) {
   State s = initial_state(fine);
+  std::map<int, std::vector<int>> faces = segments_by_face(coarse);
+  segments_by_face(fine);  // refuses segments without flat-sheet coordinates
   for (size_t i = 0; i < fine.bodies.size(); ++i) {
-    const size_t ci = static_cast<size_t>(carrying_body(coarse, fine.bodies[i]));
+    const BodyDef& b = fine.bodies[i];
+    const size_t ci = static_cast<size_t>(carrying_body(coarse, faces[b.panel], b));
     const BodyDef& c = coarse.bodies[ci];
     // The carrying body's motion from its start: x -> R_move x + p_move.
     const Mat3 R_move = coarse_state.R_WB[ci] * c.R0_WB.transpose();
-    s.R_WB[i] = R_move * fine.bodies[i].R0_WB;
-    s.p_W[i] = coarse_state.p_W[ci] + R_move * (fine.bodies[i].p0_W - c.p0_W);
+    s.R_WB[i] = R_move * b.R0_WB;
+    s.p_W[i] = coarse_state.p_W[ci] + R_move * (b.p0_W - c.p0_W);
   }
   for (size_t k = 0; k < fine.elements.size(); ++k) {
     const int crease = fine.elements[k].crease;

@@ -8,16 +8,14 @@
 
 namespace finseg {
 
-/// The coarse body that carries fine body `b`: of the coarse bodies on the same pattern face
-/// (BodyDef::panel), the one whose material outline holds b's centre, else the nearest.
-/// Throws InputError where a body has no material coordinates or its face has no coarse body.
-int carrying_body(const Model& coarse, const BodyDef& b);
-
-/// `fine`'s initial state with every body moved rigidly with its carrying body from where
-/// that body starts to where `coarse_state` has it. Each crease's fold-angle history is set to
+/// `fine`'s initial state with every segment moved rigidly with the coarse segment that
+/// carries it (of the coarse segments on its face, BodyDef::panel, the one whose flat-sheet
+/// outline holds its centre, else the nearest), from where that one starts to where
+/// `coarse_state` has it. Each crease's fold-angle history is set to
 /// `fraction` x its target (its initial angle where it has none), the branch the fine run's
 /// first history commit unwraps the carried angles to (so folds past 180 degrees keep their
-/// turns).
+/// turns). Throws InputError where a segment has no flat-sheet coordinates or a face no coarse
+/// segment.
 State refine_state(const Model& coarse, const State& coarse_state, const Model& fine,
                    double fraction);
 
