@@ -33,7 +33,6 @@ State fold_on_coarse_cut(const Scene& scene, bool quiet) {
   const double fraction = scene.folding->fraction;
   coarse.model = folding_model(coarse.model, initial_state(coarse.model), fraction, ramp_of(scene));
   State state = initial_state(coarse.model);
-  SolverProgress now;
   ProgressLine progress(
       progress_mode(quiet),
       [&] {

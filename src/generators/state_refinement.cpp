@@ -11,19 +11,28 @@ namespace finseg {
 
 namespace {
 
-// The coarse segment that carries fine segment `b`: of `face`'s (the coarse segments on b's
-// face), the one whose material outline holds b's centre, else the nearest.
-int carrying_body(const Model& coarse, const std::vector<int>& face, const BodyDef& b) {
+// A segment's centre on the flat sheet, m; refused where it was not cut from a sheet.
+const Vec2& flat_centre(const Model& m, const BodyDef& b) {
+  if (!b.centroid_M) {
+    throw InputError(m.source, "bodies", "a refined state needs segments cut from a sheet");
+  }
+  return *b.centroid_M;
+}
+
+// The coarse segment that carries a fine segment with flat-sheet centre `at` on face `panel`:
+// of `face`'s (the coarse segments on that face), the one whose material outline holds `at`,
+// else the nearest.
+int carrying_body(const Model& coarse, const std::vector<int>& face, int panel, const Vec2& at) {
   if (face.empty()) {
     throw InputError(coarse.source, "bodies",
-                     "face " + std::to_string(b.panel + 1) + " has no segment in the coarse model");
+                     "face " + std::to_string(panel + 1) + " has no segment in the coarse model");
   }
   int best = face.front();
   double nearest = std::numeric_limits<double>::infinity();
   for (const int c : face) {
     const BodyDef& cb = coarse.bodies[static_cast<size_t>(c)];
-    if (polygon_contains(material_outline(cb), *b.centroid_M, 0)) return c;
-    const double d = (*cb.centroid_M - *b.centroid_M).norm();
+    if (polygon_contains(material_outline(cb), at, 0)) return c;
+    const double d = (*cb.centroid_M - at).norm();
     if (d < nearest) nearest = d, best = c;
   }
   return best;
@@ -33,9 +42,7 @@ int carrying_body(const Model& coarse, const std::vector<int>& face, const BodyD
 std::map<int, std::vector<int>> segments_by_face(const Model& m) {
   std::map<int, std::vector<int>> faces;
   for (size_t i = 0; i < m.bodies.size(); ++i) {
-    if (!m.bodies[i].centroid_M) {
-      throw InputError(m.source, "bodies", "a refined state needs segments cut from a sheet");
-    }
+    flat_centre(m, m.bodies[i]);  // refuses a segment without one
     faces[m.bodies[i].panel].push_back(static_cast<int>(i));
   }
   return faces;
@@ -47,10 +54,10 @@ State refine_state(const Model& coarse, const State& coarse_state, const Model& 
                    double fraction) {
   State s = initial_state(fine);
   std::map<int, std::vector<int>> faces = segments_by_face(coarse);
-  segments_by_face(fine);  // refuses segments without flat-sheet coordinates
   for (size_t i = 0; i < fine.bodies.size(); ++i) {
     const BodyDef& b = fine.bodies[i];
-    const size_t ci = static_cast<size_t>(carrying_body(coarse, faces[b.panel], b));
+    const size_t ci =
+        static_cast<size_t>(carrying_body(coarse, faces[b.panel], b.panel, flat_centre(fine, b)));
     const BodyDef& c = coarse.bodies[ci];
     // The carrying body's motion from its start: x -> R_move x + p_move.
     const Mat3 R_move = coarse_state.R_WB[ci] * c.R0_WB.transpose();

@@ -443,6 +443,11 @@ SymmetricMatrix SymmetricMatrix::plus_diagonal(const Eigen::VectorXd& d) const {
   return SymmetricMatrix(S_ + D, finite_ && d.allFinite());
 }
 
+Eigen::VectorXd SymmetricMatrix::shift_scale() const {
+  const Eigen::VectorXd d = S_.diagonal().cwiseAbs();
+  return d.cwiseMax(1e-12 * d.maxCoeff());
+}
+
 namespace {
 
 // The symmetric path for A (symmetric part S, S itself when `exact`), else LU of A.

@@ -39,6 +39,9 @@ class SymmetricMatrix {
                                            const Eigen::SparseMatrix<double>& At);
   /// This matrix plus diag(d) (d finite; the pattern gains the diagonal).
   SymmetricMatrix plus_diagonal(const Eigen::VectorXd& d) const;
+  /// The scale of a Levenberg-Marquardt shift mu diag(...): |S_ii|, raised to 1e-12 of the
+  /// largest so that no zero diagonal entry goes unshifted.
+  Eigen::VectorXd shift_scale() const;
   const Eigen::SparseMatrix<double>& matrix() const { return S_; }
   bool finite() const { return finite_; }
   Eigen::Index size() const { return S_.rows(); }

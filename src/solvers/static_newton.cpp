@@ -103,8 +103,7 @@ bool shifted_newton_step(const Eigen::SparseMatrix<double>& K, const Eigen::Vect
     if (status != CholeskyStatus::NotPositiveDefinite) return status == CholeskyStatus::Solved;
     mu = kFirstShift;
   }
-  Eigen::VectorXd d = S.matrix().diagonal().cwiseAbs();
-  d = d.cwiseMax(1e-12 * d.maxCoeff());
+  const Eigen::VectorXd d = S.shift_scale();
   for (int k = 0; k < kMaxShifts; ++k, mu *= kShiftGrowth) {
     const CholeskyStatus status = cholesky_solve(S.plus_diagonal(mu * d), g, dq);
     if (status != CholeskyStatus::NotPositiveDefinite) return status == CholeskyStatus::Solved;

@@ -27,10 +27,9 @@ bool project_on_stiff_directions(const Model& model, State& state, BodyForces& f
     if (r < r_target) return true;
     r_prev = r;
     const SymmetricMatrix S = SymmetricMatrix::symmetric_part_of(-jac.dq);
-    Eigen::VectorXd d = S.matrix().diagonal().cwiseAbs();
-    d = d.cwiseMax(1e-12 * d.maxCoeff());
     Eigen::VectorXd dq;
-    if (!sparse_solve(S.plus_diagonal(kStiffShift * d), generalized_forces(model, f), dq)) {
+    if (!sparse_solve(S.plus_diagonal(kStiffShift * S.shift_scale()), generalized_forces(model, f),
+                      dq)) {
       return false;
     }
     apply_pose_increment(model, state, dq);
