@@ -25,11 +25,6 @@ Aabb plate_aabb(const Vec3& p_W, const Mat3& R_WB, const BodyDef& body, double m
 
 namespace {
 
-bool overlap(const Aabb& a, const Aabb& b) {
-  return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() &&
-         b.lo.y() <= a.hi.y() && a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
-}
-
 // 21 bits per axis, offset so that negative cells stay positive.
 std::uint64_t cell_key(std::int64_t ix, std::int64_t iy, std::int64_t iz) {
   constexpr std::int64_t off = 1 << 20, mask = (1 << 21) - 1;
@@ -84,7 +79,7 @@ std::vector<std::pair<int, int>> BroadPhase::find_pairs(const std::vector<Aabb>&
         const int i = entries_[p].second, j = entries_[q].second;
         const Aabb& a = boxes[i];
         const Aabb& b = boxes[j];
-        if (!overlap(a, b)) continue;
+        if (!boxes_overlap(a, b)) continue;
         // Report only from the cell holding the overlap's lower corner.
         const Vec3 c = a.lo.cwiseMax(b.lo);
         if (cell_key(index(c.x(), lo_all.x()), index(c.y(), lo_all.y()),
@@ -100,7 +95,7 @@ std::vector<std::pair<int, int>> BroadPhase::find_pairs(const std::vector<Aabb>&
   for (int i : large_)
     for (int j = 0; j < n; ++j) {
       if (j == i || (is_large[j] && j < i)) continue;
-      if (overlap(boxes[i], boxes[j])) pairs.emplace_back(std::min(i, j), std::max(i, j));
+      if (boxes_overlap(boxes[i], boxes[j])) pairs.emplace_back(std::min(i, j), std::max(i, j));
     }
   std::sort(pairs.begin(), pairs.end());
   return pairs;

@@ -19,6 +19,12 @@ struct Aabb {
   Vec3 hi = Vec3::Zero();
 };
 
+/// True when the boxes overlap (touching faces count).
+inline bool boxes_overlap(const Aabb& a, const Aabb& b) {
+  return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() &&
+         b.lo.y() <= a.hi.y() && a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
+}
+
 /// Box of the segment `body` at centroid p_W and orientation R_WB: its mid-surface polygon
 /// grown by the half thickness in every direction (the reach of the narrow phase), then by
 /// `margin` (m).

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
 #include "collision/broadphase.hpp"
+#include "collision/candidate_cache.hpp"
 #include "collision/contact_jacobian.hpp"
 #include "collision/contact_laws.hpp"
 #include "collision/contact_pair.hpp"
@@ -62,21 +64,80 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
   return now.z() >= 0 ? 1 : -1;
 }
 
+/// False when no sample of the source plate can touch the target, decided on the source's
+/// vertices in the target frame (the samples lie in their convex hull, and every test below is
+/// linear in the point): beyond one of the target's edge lines by more than the two half
+/// thicknesses, or all beyond that distance over one face of it, with no point of the pair's
+/// direction kept in the history (`anchored`) and, at the last commit, all on that side too
+/// (so that entry_side() gives every sample the side it is on). Saves the samples of the many
+/// pairs whose boxes overlap only because the plates are tilted.
+bool direction_may_touch(const State& state, int src, int tgt, const PlateShape& ss,
+                         const PlateShape& st, bool anchored) {
+  const Outline& vs = *ss.outline;
+  const Outline& vt = *st.outline;
+  const double reach = ss.r + st.r;
+  thread_local std::vector<Vec3> q;  // source vertices in the target frame
+  q.resize(vs.size());
+  const Mat3 R_TW = state.R_WB[tgt].transpose();
+  for (std::size_t k = 0; k < vs.size(); ++k)
+    q[k] =
+        R_TW * (state.p_W[src] + state.R_WB[src] * Vec3(vs[k].x(), vs[k].y(), 0) - state.p_W[tgt]);
+  for (std::size_t i = 0; i < vt.size(); ++i) {
+    const Vec2 nrm = edge_normal(vt, static_cast<int>(i));
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec3& x : q) nearest = std::min(nearest, nrm.dot(Vec2(x.x(), x.y()) - vt[i]));
+    if (nearest > reach) return false;
+  }
+  double lo = q[0].z(), hi = q[0].z();
+  for (const Vec3& x : q) lo = std::min(lo, x.z()), hi = std::max(hi, x.z());
+  const int above = lo >= reach ? 1 : hi <= -reach ? -1 : 0;
+  if (above == 0 || anchored) return true;
+  const ContactState& h = state.contact;
+  if (h.p_W.size() != state.p_W.size() || h.R_WB.size() != state.R_WB.size())
+    return !(above * (R_TW * (state.p_W[src] - state.p_W[tgt])).z() > 0);  // entry_side's centre
+  const Mat3 R_TW_was = h.R_WB[tgt].transpose();
+  for (const Vec2& v : vs) {
+    const double was =
+        (R_TW_was * (h.p_W[src] + h.R_WB[src] * Vec3(v.x(), v.y(), 0) - h.p_W[tgt])).z();
+    if (!(above * was > 0)) return true;
+  }
+  return false;
+}
+
+/// True when the history keeps a point of pair (a, b) in direction `dir`.
+bool anchored(const ContactState& cs, int a, int b, int dir) {
+  const std::uint64_t first = point_key(a, b, dir, 0);
+  const auto it =
+      std::lower_bound(cs.anchors.begin(), cs.anchors.end(), first,
+                       [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
+  return it != cs.anchors.end() && it->key < first + (std::uint64_t{1} << 12);
+}
+
 /// What a detection is for: forces see the points that push (penetration beyond their
 /// overlap); a commit keeps every point that touches, so that its overlap can shrink; the
 /// commit at the start of a run gives new points their overlap under `initial_overlap: ignore`.
 enum class DetectFor { Forces, Commit, Start };
 
-/// Calls visit(const PairContact&) for every touching pair, in pair order.
-template <class Visit>
-void detect(const Model& model, const State& state, DetectFor what, Visit&& visit) {
-  const ContactDef& def = model.contact;
+/// The pairs whose boxes overlap at the poses of `state` and that the rules allow: from the
+/// candidates of the last commit where they cover these poses, else by a fresh search.
+std::vector<std::pair<int, int>> candidate_pairs(const Model& model, const State& state,
+                                                 const ContactCandidates* kept) {
   // Buffers kept per thread between calls: large models then detect without page faults.
   thread_local std::vector<Aabb> boxes;
   thread_local BroadPhase broad;
+  if (kept != nullptr && covers(*kept, model, state))
+    return present_pairs(*kept, model, state, boxes);
+  return contact_candidates(model, state, PairRules(model), broad, boxes);
+}
+
+/// Calls visit(const PairContact&) for every touching pair, in pair order; `kept`: candidates
+/// that may serve (null: search afresh).
+template <class Visit>
+void detect(const Model& model, const State& state, DetectFor what, const ContactCandidates* kept,
+            Visit&& visit) {
+  const ContactDef& def = model.contact;
   thread_local PairContact pc;
-  const PairRules rules(model);
-  const auto candidates = contact_candidates(model, state, rules, broad, boxes);
+  const auto candidates = candidate_pairs(model, state, kept);
   for (const auto& [a, b] : candidates) {
     pc.a = a;
     pc.b = b;
@@ -90,6 +151,8 @@ void detect(const Model& model, const State& state, DetectFor what, Visit&& visi
       const int src = dir == 0 ? a : b, tgt = dir == 0 ? b : a;
       const PlateShape& ss = dir == 0 ? pc.sa : pc.sb;
       const PlateShape& st = dir == 0 ? pc.sb : pc.sa;
+      if (!direction_may_touch(state, src, tgt, ss, st, anchored(state.contact, a, b, dir)))
+        continue;
       const BodyKin<double> S = kin_of(state, src), G = kin_of(state, tgt);
       const std::vector<PlateSample> samples = plate_samples(ss, def.samples_per_edge);
       for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
@@ -221,30 +284,32 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   const ContactDef& def = model.contact;
   if (assembler.want_jacobian() && assembler.autodiff_elements()) {
     // The automatic-differentiation oracle of the closed form.
-    detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
-      assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
-        return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
-      });
-    });
+    detect(model, state, DetectFor::Forces, state.contact.candidates.get(),
+           [&](const PairContact& pc) {
+             assembler.pair(pc.a, pc.b, [&](const auto& A, const auto& B, auto& wa, auto& wb) {
+               return evaluate_pair(def, pc, A, B, wa, wb, nullptr);
+             });
+           });
     return;
   }
   const bool jacobian = assembler.want_jacobian();
   const bool with_velocity = assembler.want_velocity_jacobian();
   std::vector<PointReport> reports;
-  detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
-    const BodyKin<double> A = assembler.kin(pc.a), B = assembler.kin(pc.b);
-    Wrench<double> wa, wb;
-    reports.clear();
-    assembler.add_energy(evaluate_pair(def, pc, A, B, wa, wb, jacobian ? &reports : nullptr));
-    assembler.add(pc.a, wa);
-    assembler.add(pc.b, wb);
-    if (!jacobian) return;
-    const PairSlots slots = assembler.reserve_pair(pc.a, pc.b, with_velocity);
-    if (!slots.any()) return;
-    Mat12 dq = Mat12::Zero(), dv = Mat12::Zero();
-    add_contact_pair_jacobian(def, pc, reports, A, B, slots.with_velocity, dq, dv);
-    assembler.fill_pair(slots, dq, dv);
-  });
+  detect(
+      model, state, DetectFor::Forces, state.contact.candidates.get(), [&](const PairContact& pc) {
+        const BodyKin<double> A = assembler.kin(pc.a), B = assembler.kin(pc.b);
+        Wrench<double> wa, wb;
+        reports.clear();
+        assembler.add_energy(evaluate_pair(def, pc, A, B, wa, wb, jacobian ? &reports : nullptr));
+        assembler.add(pc.a, wa);
+        assembler.add(pc.b, wb);
+        if (!jacobian) return;
+        const PairSlots slots = assembler.reserve_pair(pc.a, pc.b, with_velocity);
+        if (!slots.any()) return;
+        Mat12 dq = Mat12::Zero(), dv = Mat12::Zero();
+        add_contact_pair_jacobian(def, pc, reports, A, B, slots.with_velocity, dq, dv);
+        assembler.fill_pair(slots, dq, dv);
+      });
 }
 
 void commit_contact_history(const Model& model, State& state, bool start) {
@@ -255,88 +320,94 @@ void commit_contact_history(const Model& model, State& state, bool start) {
   const ContactDef& def = model.contact;
   std::vector<ContactAnchor> next;
   std::vector<PointReport> rep;
-  detect(model, state, start ? DetectFor::Start : DetectFor::Commit, [&](const PairContact& pc) {
-    rep.clear();
-    const BodyKin<double> A = kin_of(state, pc.a), B = kin_of(state, pc.b);
-    Wrench<double> wa, wb;
-    evaluate_pair(def, pc, A, B, wa, wb, &rep);
-    for (std::size_t k = 0; k < rep.size(); ++k) {
-      const PointReport& r = rep[k];
-      const ActivePoint& pt = pc.points[k];
-      const BodyKin<double>& src = pt.dir == 0 ? A : B;
-      const BodyKin<double>& tgt = pt.dir == 0 ? B : A;
-      ContactAnchor an;
-      an.key = point_key(pc.a, pc.b, pt.dir, pt.sample);
-      const double kt = r.share * def.tangential_stiffness;
-      if (pt.anchor) {
-        an = *pt.anchor;
-        if (def.friction == FrictionModel::Anchor && kt > 0) {
-          const Vec3 xs = src.point_W(an.r_src_B), xt = tgt.point_W(an.r_tgt_B);
-          const Vec3 z = xs - xt;
-          const Vec3 z_t = z - r.n_W * r.n_W.dot(z);
-          const double mu = an.sliding ? def.mu_dynamic : def.mu_static;
-          if (kt * z_t.norm() > mu * r.normal) {
-            // Slipping: drag the anchor so that the spring carries the dynamic limit.
-            an.sliding = true;
-            const Vec3 z_new = z_t * (def.mu_dynamic * r.normal / (kt * z_t.norm()));
-            an.r_src_B = src.R_WB.transpose() * (xt + z_new - src.p_W);
-          } else if (an.sliding && r.v_t.norm() < def.stiction_speed) {
-            an.sliding = false;
-          }
-        }
-      } else {
-        an.side = pt.anchor_side;
-        an.overlap = pt.overlap;
-        an.impact_speed = r.penetration_rate;
-        an.sliding = false;
-        // New anchor placed so that its spring starts with the friction force just applied.
-        Vec3 offset = Vec3::Zero();
-        if (def.friction == FrictionModel::Anchor && kt > 0) offset = -r.f_t / kt;
-        an.r_tgt_B = tgt.R_WB.transpose() * (r.x_W - tgt.p_W);
-        an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
-      }
-      an.slip_speed = r.v_t.norm();
-      if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap, pc.sa.r + pc.sb.r)) continue;
-      next.push_back(an);
-    }
-  });
+  // The candidates of the next step's detections, found here once with grown boxes.
+  std::shared_ptr<const ContactCandidates> found =
+      find_contact_candidates(model, state, candidate_margin(model, state));
+  detect(model, state, start ? DetectFor::Start : DetectFor::Commit, found.get(),
+         [&](const PairContact& pc) {
+           rep.clear();
+           const BodyKin<double> A = kin_of(state, pc.a), B = kin_of(state, pc.b);
+           Wrench<double> wa, wb;
+           evaluate_pair(def, pc, A, B, wa, wb, &rep);
+           for (std::size_t k = 0; k < rep.size(); ++k) {
+             const PointReport& r = rep[k];
+             const ActivePoint& pt = pc.points[k];
+             const BodyKin<double>& src = pt.dir == 0 ? A : B;
+             const BodyKin<double>& tgt = pt.dir == 0 ? B : A;
+             ContactAnchor an;
+             an.key = point_key(pc.a, pc.b, pt.dir, pt.sample);
+             const double kt = r.share * def.tangential_stiffness;
+             if (pt.anchor) {
+               an = *pt.anchor;
+               if (def.friction == FrictionModel::Anchor && kt > 0) {
+                 const Vec3 xs = src.point_W(an.r_src_B), xt = tgt.point_W(an.r_tgt_B);
+                 const Vec3 z = xs - xt;
+                 const Vec3 z_t = z - r.n_W * r.n_W.dot(z);
+                 const double mu = an.sliding ? def.mu_dynamic : def.mu_static;
+                 if (kt * z_t.norm() > mu * r.normal) {
+                   // Slipping: drag the anchor so that the spring carries the dynamic limit.
+                   an.sliding = true;
+                   const Vec3 z_new = z_t * (def.mu_dynamic * r.normal / (kt * z_t.norm()));
+                   an.r_src_B = src.R_WB.transpose() * (xt + z_new - src.p_W);
+                 } else if (an.sliding && r.v_t.norm() < def.stiction_speed) {
+                   an.sliding = false;
+                 }
+               }
+             } else {
+               an.side = pt.anchor_side;
+               an.overlap = pt.overlap;
+               an.impact_speed = r.penetration_rate;
+               an.sliding = false;
+               // New anchor placed so that its spring starts with the friction force just applied.
+               Vec3 offset = Vec3::Zero();
+               if (def.friction == FrictionModel::Anchor && kt > 0) offset = -r.f_t / kt;
+               an.r_tgt_B = tgt.R_WB.transpose() * (r.x_W - tgt.p_W);
+               an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
+             }
+             an.slip_speed = r.v_t.norm();
+             if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap, pc.sa.r + pc.sb.r)) continue;
+             next.push_back(an);
+           }
+         });
   std::sort(next.begin(), next.end(),
             [](const ContactAnchor& x, const ContactAnchor& y) { return x.key < y.key; });
   state.contact.anchors = std::move(next);
   state.contact.p_W = state.p_W;
   state.contact.R_WB = state.R_WB;
+  state.contact.candidates = std::move(found);
 }
 
 ContactSummary contact_summary(const Model& model, const State& state) {
   ContactSummary s;
   if (!model.contact.enabled) return s;
   std::vector<PointReport> rep;
-  detect(model, state, DetectFor::Forces, [&](const PairContact& pc) {
-    rep.clear();
-    Wrench<double> wa, wb;
-    evaluate_pair(model.contact, pc, kin_of(state, pc.a), kin_of(state, pc.b), wa, wb, &rep);
-    ContactPairForce pair;
-    pair.a = pc.a;
-    pair.b = pc.b;
-    for (const PointReport& r : rep) {
-      ++s.active;
-      s.total_normal_force += r.normal;
-      s.total_friction_force += r.friction;
-      s.max_penetration = std::max(s.max_penetration, r.depth);
-      s.points_W.push_back(r.x_W);
-      s.point_normal.push_back(r.normal);
-      s.point_penetration.push_back(r.depth);
-      s.point_friction.push_back(r.friction);
-      ++pair.points;
-      pair.normal_force += r.normal;
-      pair.friction_force += r.friction;
-      pair.max_penetration = std::max(pair.max_penetration, r.depth);
-      // Force on b: the reported normal points from the target towards the source point.
-      const double sign = pc.points[&r - rep.data()].dir == 0 ? -1.0 : 1.0;
-      pair.f_b_W += sign * (r.normal * r.n_W + r.f_t);
-    }
-    s.pairs.push_back(pair);
-  });
+  detect(model, state, DetectFor::Forces, state.contact.candidates.get(),
+         [&](const PairContact& pc) {
+           rep.clear();
+           Wrench<double> wa, wb;
+           evaluate_pair(model.contact, pc, kin_of(state, pc.a), kin_of(state, pc.b), wa, wb, &rep);
+           ContactPairForce pair;
+           pair.a = pc.a;
+           pair.b = pc.b;
+           for (const PointReport& r : rep) {
+             ++s.active;
+             s.total_normal_force += r.normal;
+             s.total_friction_force += r.friction;
+             s.max_penetration = std::max(s.max_penetration, r.depth);
+             s.points_W.push_back(r.x_W);
+             s.point_normal.push_back(r.normal);
+             s.point_penetration.push_back(r.depth);
+             s.point_friction.push_back(r.friction);
+             ++pair.points;
+             pair.normal_force += r.normal;
+             pair.friction_force += r.friction;
+             pair.max_penetration = std::max(pair.max_penetration, r.depth);
+             // Force on b: the reported normal points from the target towards the source point.
+             const double sign = pc.points[&r - rep.data()].dir == 0 ? -1.0 : 1.0;
+             pair.f_b_W += sign * (r.normal * r.n_W + r.f_t);
+           }
+           s.pairs.push_back(pair);
+         });
   return s;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -91,6 +92,8 @@ struct ContactAnchor {
   double overlap = 0;
 };
 
+struct ContactCandidates;  // collision/candidate_cache.hpp
+
 /// Contact history in State (sorted by key); written only by commit_contact_history().
 struct ContactState {
   std::vector<ContactAnchor> anchors;
@@ -99,6 +102,9 @@ struct ContactState {
   /// full force instead of a contact seen from the far side.
   std::vector<Vec3> p_W;
   std::vector<Mat3> R_WB;
+  /// Candidate pairs found at the last commit with grown boxes, reused by the detections
+  /// while they cover the poses (derived data: not saved; null: search afresh).
+  std::shared_ptr<const ContactCandidates> candidates;
 };
 
 }  // namespace finseg
