@@ -126,5 +126,13 @@ TEST(CliBadInput, DivergedRerunReplacesAnEarlierSummary) {
   EXPECT_NE(test::slurp(dir / "out/summary.json").find("\"diverged\""), std::string::npos);
 }
 
+TEST(CliBadInput, AFolderGivenForAFileToWriteIsNamed) {
+  TempDir dir;
+  const auto r = run_finseg(dir, "gen cone --top open --base open --gathered 0.5 --out .");
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("cannot write '.': it is a folder"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "..partial"));
+}
+
 }  // namespace cli_bad_input_test
 }  // namespace finseg

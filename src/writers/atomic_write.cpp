@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +13,10 @@
 namespace finseg {
 
 void write_file_atomically(const std::string& path, const std::string& content) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw OutputError("cannot write '" + path + "': it is a folder; name the file to write");
+  }
   const std::string partial = path + ".partial";
   {
     std::ofstream out(partial, std::ios::binary | std::ios::trunc);
