@@ -84,18 +84,29 @@ TEST(ModifiedNewton, MatrixOfFreeFlightIsRenewedWhenContactSwitchesOn) {
   State start = initial_state(m);
   start.v_W[1] = Vec3(0, 0, -v0);
   const double tol = 1e-12;
-  NewtonReuse reuse;
-  reuse.max_age = 20;
-  const Step flight = backward_euler(m, start, h, tol, &reuse);
-  ASSERT_TRUE(flight.converged);
-  ASSERT_GT(flight.end.p_W[1].z(), kThick);  // still in the air
-  EXPECT_EQ(flight.stats.factorizations, 1);
-  const Step full = backward_euler(m, flight.end, h, tol, nullptr);
-  const Step kept = backward_euler(m, flight.end, h, tol, &reuse);
-  ASSERT_TRUE(full.converged && kept.converged);
-  ASSERT_LT(full.end.p_W[1].z(), kThick);  // in contact
-  EXPECT_GE(kept.stats.factorizations, 1);
-  EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
+  for (bool krylov : {false, true}) {
+    NewtonReuse reuse;
+    reuse.max_age = 20;
+    reuse.krylov = krylov;
+    const Step flight = backward_euler(m, start, h, tol, &reuse);
+    ASSERT_TRUE(flight.converged);
+    ASSERT_GT(flight.end.p_W[1].z(), kThick);  // still in the air
+    EXPECT_EQ(flight.stats.factorizations, 1);
+    const Step full = backward_euler(m, flight.end, h, tol, nullptr);
+    const Step kept = backward_euler(m, flight.end, h, tol, &reuse);
+    ASSERT_TRUE(full.converged && kept.converged);
+    ASSERT_LT(full.end.p_W[1].z(), kThick);  // in contact
+    if (krylov) {
+      // The contact adds a stiffness of low rank to M: GMRES preconditioned by M's factor
+      // solves the new matrix in a few iterations, and no factorization is needed.
+      EXPECT_GE(kept.stats.krylov_steps, 1);
+      EXPECT_EQ(kept.stats.factorizations, 0);
+    } else {
+      EXPECT_GE(kept.stats.factorizations, 1);
+      EXPECT_EQ(kept.stats.krylov_steps, 0);
+    }
+    EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol) << krylov;
+  }
 }
 
 // A kept matrix of a nonsymmetric model serves as the factor of its symmetric part (the
@@ -144,7 +155,8 @@ TEST(ModifiedNewton, LuTakesOverWhereTheSymmetricPartStopsContracting) {
   NewtonReuse reuse;
   reuse.max_age = 20;
   reuse.approximate_asymmetry = 1;  // every matrix's symmetric part is tried first
-  const long lu_before = linear_solve_counters().lu_factorizations;
+  reuse.krylov = false;
+  long lu_before = linear_solve_counters().lu_factorizations;
   const Step kept = backward_euler(mod, start, h, tol, &reuse);
   ASSERT_TRUE(kept.converged);
   // The symmetric part's factor, then LU's: not one symmetric part after another.
@@ -153,6 +165,18 @@ TEST(ModifiedNewton, LuTakesOverWhereTheSymmetricPartStopsContracting) {
   EXPECT_GT(linear_solve_counters().lu_factorizations, lu_before);
   EXPECT_FALSE(reuse.approximate);
   EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
+  // With Krylov steps the symmetric part's factor preconditions GMRES on the whole matrix
+  // instead: the same step, one factorization, no LU.
+  NewtonReuse krylov;
+  krylov.max_age = 20;
+  krylov.approximate_asymmetry = 1;
+  lu_before = linear_solve_counters().lu_factorizations;
+  const Step gmres = backward_euler(mod, start, h, tol, &krylov);
+  ASSERT_TRUE(gmres.converged);
+  EXPECT_EQ(gmres.stats.factorizations, 1);
+  EXPECT_GE(gmres.stats.krylov_steps, 1);
+  EXPECT_EQ(linear_solve_counters().lu_factorizations, lu_before);
+  EXPECT_LT(h * (gmres.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol);
 }
 
 // The implicit solver's run of the loaded strip from rest to t_end with steps of dt (at

@@ -25,7 +25,7 @@ SolverSettings read_solver_section(const Fields& root) {
   const Fields f(root.node("solver"), root.context("solver"),
                  {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol",
                   "load_steps", "max_iterations", "tolerance", "scheme", "rho_inf",
-                  "jacobian_reuse", "jacobian_max_age", "newton_tolerance"});
+                  "jacobian_reuse", "jacobian_max_age", "krylov_steps", "newton_tolerance"});
   SolverSettings s;
   const std::string type = f.word("type", "static");
   if (type == "static") {
@@ -59,6 +59,7 @@ SolverSettings read_solver_section(const Fields& root) {
   s.max_iterations = f.integer("max_iterations", s.max_iterations, 1, 100000);
   s.tolerance = f.number("tolerance", s.tolerance, positive("(relative)"));
   s.jacobian_reuse = f.flag("jacobian_reuse", s.jacobian_reuse);
+  s.krylov_steps = f.flag("krylov_steps", s.krylov_steps);
   s.jacobian_max_age = f.integer("jacobian_max_age", s.jacobian_max_age, 1, 1000);
   s.newton_tolerance =
       f.number("newton_tolerance", s.newton_tolerance, interval(0, 1, true, false));  // (0, 1]

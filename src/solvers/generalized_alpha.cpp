@@ -30,6 +30,7 @@ class GeneralizedAlpha final : public TimeStepper {
         tol_(tol),
         newton_tol_(s.newton_tolerance * tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
+    reuse_.krylov = s.krylov_steps;
   }
 
   // vdot_0 = M^-1 (g - gyro); the pseudo-acceleration starts equal to it.

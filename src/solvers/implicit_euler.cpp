@@ -29,6 +29,7 @@ class BackwardEuler final : public TimeStepper {
   BackwardEuler(const SolverSettings& s, double tol)
       : max_iterations_(newton_iterations(s)), tol_(tol), newton_tol_(s.newton_tolerance * tol) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
+    reuse_.krylov = s.krylov_steps;
   }
 
   void begin(const Model&, const State&, const BodyForces&) override {}

@@ -5,6 +5,7 @@
 
 #include "core/so3.hpp"
 #include "solvers/dofs.hpp"
+#include "solvers/krylov_step.hpp"
 #include "solvers/linear_solve.hpp"
 #include "solvers/volume_stiffness.hpp"
 
@@ -183,6 +184,18 @@ bool factor_new_matrix(const Model& model, const State& state, const Linearisati
   return k.matrix.factor_and_solve(lin.A, s_cq, std::move(gas), -lin.r, dx);
 }
 
+// GMRES on a new matrix preconditioned by the kept factor: converged within this, its step
+// counts as the new matrix's (docs/solvers.md, "Krylov steps on a kept factor").
+constexpr KrylovSettings kKrylov{};
+
+// True when the kept factor may precondition the matrix at coefficients s_cq, s_cv: one it
+// would still serve but for its contraction (no gas terms, which A leaves out).
+bool may_precondition(const Model& model, const State& state, const NewtonReuse& k, double s_cq,
+                      double s_cv, bool symmetric) {
+  return k.krylov && k.matrix.valid() && k.symmetric == symmetric && k.age < k.max_age &&
+         near(s_cq, k.s_cq) && near(s_cv, k.s_cv) && volume_stiffness(model, state).empty();
+}
+
 // Newton with the iteration matrix kept while it contracts (docs/solvers.md, "Modified
 // Newton"); the residual is always exact, so the solution is Newton's to the tolerance.
 // A kept matrix is an approximation anyway, so a nearly symmetric one (damping, friction and
@@ -203,11 +216,21 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     if (!lin.r.allFinite()) return false;
     Eigen::VectorXd dx;
     const bool fresh = renew;
+    bool krylov = false;  // this fresh step solved by GMRES on the kept factor
     if (fresh) {
-      ++stats.factorizations;
       dx_prev = 0;
-      if (!factor_new_matrix(model, state, lin, s_cq, s_cv, symmetric, exact_only, k, dx)) {
-        return false;
+      if (may_precondition(model, state, k, s_cq, s_cv, symmetric)) {
+        int its = 0;
+        krylov = krylov_solve(lin.A, k.matrix, -lin.r, kKrylov, dx, &its);
+        stats.krylov_iterations += its;
+      }
+      if (krylov) {
+        ++stats.krylov_steps;
+      } else {
+        ++stats.factorizations;
+        if (!factor_new_matrix(model, state, lin, s_cq, s_cv, symmetric, exact_only, k, dx)) {
+          return false;
+        }
       }
     } else if (!k.matrix.solve(-lin.r, dx)) {
       lin.at(x, true);  // (cannot happen with a factor that solved once; renewed all the same)
@@ -223,7 +246,7 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
       k.eta = theta < 1 ? theta / (1 - theta) : INFINITY;
     }
     // Fresh and exact, Newton's test; else also the error left after the step.
-    if (step < pose_tol && ((fresh && !k.approximate) || k.eta * step < pose_tol)) {
+    if (step < pose_tol && ((fresh && (krylov || !k.approximate)) || k.eta * step < pose_tol)) {
       x += dx;
       lin.finish(x);
       return true;
@@ -233,7 +256,7 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
       // A step that needed halving leaves the region where this matrix is good (or, made of
       // a symmetric part, shows that part to be poor).
       renew = backtrack(lin, dx, false, x) > 0;
-      exact_only = exact_only || (renew && k.approximate);
+      exact_only = exact_only || (renew && k.approximate && !krylov);
       continue;
     }
     const double merit = lin.r.squaredNorm();

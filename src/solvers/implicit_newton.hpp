@@ -31,6 +31,9 @@ struct NewtonResidual {
 /// Owned by the time stepper; `max_age` 1 is full Newton (a new matrix every iteration).
 struct NewtonReuse {
   int max_age = 1;  ///< Newton iterations one factorization serves at most
+  /// Where the kept matrix stops contracting, try GMRES on the new matrix preconditioned by
+  /// its factor before factoring the new one (docs/solvers.md, "Krylov steps on a kept factor").
+  bool krylov = true;
   KeptNewtonMatrix matrix;
   double s_cq = 0, s_cv = 0;  ///< the coefficients of dF/dq and dF/dv it was made with
   bool symmetric = false;     ///< made for the symmetric (Cholesky) path

@@ -41,6 +41,7 @@ struct SolverSettings {
   /// implicit: keep Newton's factored iteration matrix across iterations and steps while it
   /// contracts (modified Newton, docs/solvers.md); false: a new one every iteration.
   bool jacobian_reuse = true;
+  bool krylov_steps = true;   ///< implicit, with jacobian_reuse: GMRES on a kept factor first
   int jacobian_max_age = 20;  ///< implicit: Newton iterations one kept matrix serves at most
   /// implicit: Newton stops when its pose correction (and with a kept matrix the error bound
   /// left after it) is below this fraction of the local error tolerance (docs/solvers.md)
@@ -63,8 +64,10 @@ struct SolverStats {
   long newton_iterations = 0;
   long force_evaluations = 0;
   long jacobian_evaluations = 0;
-  long factorizations = 0;  ///< implicit: factorizations of Newton's iteration matrix
-  long settles = 0;         ///< static: limit points passed by pseudo-transient continuation
+  long factorizations = 0;     ///< implicit: factorizations of Newton's iteration matrix
+  long krylov_steps = 0;       ///< implicit: new matrices solved by GMRES on a kept factor instead
+  long krylov_iterations = 0;  ///< implicit: GMRES iterations, those of failed tries included
+  long settles = 0;            ///< static: limit points passed by pseudo-transient continuation
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;
   /// The run's sparse solves (analyses, Cholesky and LU factorizations and their seconds).

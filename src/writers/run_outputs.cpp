@@ -40,6 +40,7 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"tolerance", s.tolerance},
           {"jacobian_reuse", s.jacobian_reuse},
           {"jacobian_max_age", s.jacobian_max_age},
+          {"krylov_steps", s.krylov_steps},
           {"newton_tolerance", s.newton_tolerance}};
 }
 
@@ -61,6 +62,8 @@ nlohmann::json stats_json(const SolverStats& s) {
           {"force_evaluations", s.force_evaluations},
           {"jacobian_evaluations", s.jacobian_evaluations},
           {"factorizations", s.factorizations},
+          {"krylov_steps", s.krylov_steps},
+          {"krylov_iterations", s.krylov_iterations},
           {"settles", s.settles},
           {"smallest_step_s", s.smallest_step},
           {"largest_step_s", s.largest_step},
