@@ -22,49 +22,43 @@ double moved(const Vec3& p0, const Mat3& R0, const Vec3& p, const Mat3& R, doubl
 }  // namespace
 
 std::shared_ptr<const ContactCandidates> find_contact_candidates(const Model& model,
-                                                                 const State& state,
-                                                                 double margin) {
+                                                                 const State& state) {
   auto c = std::make_shared<ContactCandidates>();
   const std::size_t n = model.bodies.size();
   c->model = &model;
   c->bodies = model.bodies.data();
   c->count = n;
-  c->margin = margin;
   c->p_W = state.p_W;
   c->R_WB = state.R_WB;
   c->reach.resize(n);
-  for (std::size_t i = 0; i < n; ++i) c->reach[i] = outline_radius(model.bodies[i].outline_B);
-  thread_local BroadPhase broad;
+  // One pass: each segment's reach, box and motion since the last commit.
+  const ContactState& was = state.contact;
+  const bool known = was.p_W.size() == n && was.R_WB.size() == n;
+  double thinnest = std::numeric_limits<double>::infinity(), last = 0;
   std::vector<Aabb> boxes(n);
-  for (std::size_t i = 0; i < n; ++i)
-    boxes[i] =
-        plate_aabb(state.p_W[i], state.R_WB[i], model.bodies[i], model.contact.margin + margin);
+  std::vector<double> extents(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodyDef& b = model.bodies[i];
+    c->reach[i] = outline_radius(b.outline_B);
+    thinnest = std::min(thinnest, b.thickness);
+    boxes[i] = plate_aabb(state.p_W[i], state.R_WB[i], b, 0);
+    extents[i] = (boxes[i].hi - boxes[i].lo).maxCoeff();
+    if (known)
+      last =
+          std::max(last, moved(was.p_W[i], was.R_WB[i], state.p_W[i], state.R_WB[i], c->reach[i]));
+  }
+  if (n == 0) return c;
+  std::nth_element(extents.begin(), extents.begin() + n / 2, extents.end());
+  c->margin = std::min(std::max(2 * last, thinnest), extents[n / 2]);
+  const Vec3 grow = Vec3::Constant(model.contact.margin + c->margin);
+  for (Aabb& box : boxes) box = {box.lo - grow, box.hi + grow};
+  thread_local BroadPhase broad;
   c->pairs = broad.find_pairs(boxes);
   const PairRules rules(model);
   c->pairs.erase(std::remove_if(c->pairs.begin(), c->pairs.end(),
                                 [&](const auto& p) { return !rules.may_touch(p.first, p.second); }),
                  c->pairs.end());
   return c;
-}
-
-double candidate_margin(const Model& model, const State& state) {
-  const std::size_t n = model.bodies.size();
-  if (n == 0) return 0;
-  double thinnest = std::numeric_limits<double>::infinity(), last = 0;
-  std::vector<double> extents(n);
-  const ContactState& was = state.contact;
-  const bool known = was.p_W.size() == n && was.R_WB.size() == n;
-  for (std::size_t i = 0; i < n; ++i) {
-    const BodyDef& b = model.bodies[i];
-    thinnest = std::min(thinnest, b.thickness);
-    const Aabb box = plate_aabb(state.p_W[i], state.R_WB[i], b, 0);
-    extents[i] = (box.hi - box.lo).maxCoeff();
-    if (known)
-      last = std::max(last, moved(was.p_W[i], was.R_WB[i], state.p_W[i], state.R_WB[i],
-                                  outline_radius(b.outline_B)));
-  }
-  std::nth_element(extents.begin(), extents.begin() + n / 2, extents.end());
-  return std::min(std::max(2 * last, thinnest), extents[n / 2]);
 }
 
 bool covers(const ContactCandidates& c, const Model& model, const State& state) {

@@ -31,14 +31,12 @@ struct ContactCandidates {
   std::vector<std::pair<int, int>> pairs;  ///< allowed pairs whose grown boxes overlap (sorted)
 };
 
-/// Finds the candidates at the poses of `state`, the boxes grown by `margin` (m, >= 0).
+/// Finds the candidates at the poses of `state` (a commit's, before it records them) with the
+/// boxes grown by a margin: twice the largest distance a segment moved since the last commit
+/// (the poses in `state.contact`), at least the thinnest segment's thickness, at most the median
+/// box extent (beyond it a fresh search is as cheap).
 std::shared_ptr<const ContactCandidates> find_contact_candidates(const Model& model,
-                                                                 const State& state, double margin);
-
-/// The margin for candidates found at a commit: twice the largest distance a segment moved
-/// since the last commit (the poses in `state.contact`), at least the thinnest segment's
-/// thickness, at most the median box extent (beyond it a fresh search is as cheap).
-double candidate_margin(const Model& model, const State& state);
+                                                                 const State& state);
 
 /// True when `c` was found for `model` and no segment of `state` has moved by its margin.
 bool covers(const ContactCandidates& c, const Model& model, const State& state);

@@ -29,10 +29,15 @@ std::uint64_t point_key(int a, int b, int dir, int sample) {
          (static_cast<std::uint64_t>(dir) << 12) | static_cast<std::uint64_t>(sample);
 }
 
+/// The first anchor of the history with a key not below `key` (the anchors are sorted by key).
+std::vector<ContactAnchor>::const_iterator first_anchor_from(const ContactState& cs,
+                                                             std::uint64_t key) {
+  return std::lower_bound(cs.anchors.begin(), cs.anchors.end(), key,
+                          [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
+}
+
 const ContactAnchor* find_anchor(const ContactState& cs, std::uint64_t key) {
-  const auto it =
-      std::lower_bound(cs.anchors.begin(), cs.anchors.end(), key,
-                       [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
+  const auto it = first_anchor_from(cs, key);
   return (it != cs.anchors.end() && it->key == key) ? &*it : nullptr;
 }
 
@@ -107,9 +112,7 @@ bool direction_may_touch(const State& state, int src, int tgt, const PlateShape&
 /// True when the history keeps a point of pair (a, b) in direction `dir`.
 bool anchored(const ContactState& cs, int a, int b, int dir) {
   const std::uint64_t first = point_key(a, b, dir, 0);
-  const auto it =
-      std::lower_bound(cs.anchors.begin(), cs.anchors.end(), first,
-                       [](const ContactAnchor& x, std::uint64_t k) { return x.key < k; });
+  const auto it = first_anchor_from(cs, first);
   return it != cs.anchors.end() && it->key < first + (std::uint64_t{1} << 12);
 }
 
@@ -321,8 +324,7 @@ void commit_contact_history(const Model& model, State& state, bool start) {
   std::vector<ContactAnchor> next;
   std::vector<PointReport> rep;
   // The candidates of the next step's detections, found here once with grown boxes.
-  std::shared_ptr<const ContactCandidates> found =
-      find_contact_candidates(model, state, candidate_margin(model, state));
+  std::shared_ptr<const ContactCandidates> found = find_contact_candidates(model, state);
   detect(model, state, start ? DetectFor::Start : DetectFor::Commit, found.get(),
          [&](const PairContact& pc) {
            rep.clear();

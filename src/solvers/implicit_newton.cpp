@@ -161,15 +161,13 @@ bool near(double a, double b) {
 
 // Makes `lin.A` (at the iterate, with coefficients s_cq and s_cv) the kept matrix and solves
 // with it for the step dx: as the factor of its symmetric part where the model is symmetric, or
-// nearly so and LU is not required (`exact_only`), else as LU with the gas terms.
-bool factor_new_matrix(const Model& model, const State& state, const Linearisation& lin,
-                       double s_cq, double s_cv, bool symmetric, bool exact_only, NewtonReuse& k,
-                       Eigen::VectorXd& dx) {
+// nearly so and LU is not required (`exact_only`), else as LU with the gas terms `gas`.
+bool factor_new_matrix(const Linearisation& lin, VolumeStiffness gas, double s_cq, double s_cv,
+                       bool symmetric, bool exact_only, NewtonReuse& k, Eigen::VectorXd& dx) {
   k.age = 0;
   k.s_cq = s_cq;
   k.s_cv = s_cv;
   k.symmetric = symmetric;
-  VolumeStiffness gas = volume_stiffness(model, state);
   const bool nearly = !symmetric && gas.empty();  // may stand for its symmetric part
   const Eigen::SparseMatrix<double> At =
       nearly ? Eigen::SparseMatrix<double>(lin.A.transpose()) : Eigen::SparseMatrix<double>();
@@ -189,11 +187,11 @@ bool factor_new_matrix(const Model& model, const State& state, const Linearisati
 constexpr KrylovSettings kKrylov{};
 
 // True when the kept factor may precondition the matrix at coefficients s_cq, s_cv: one it
-// would still serve but for its contraction (no gas terms, which A leaves out).
-bool may_precondition(const Model& model, const State& state, const NewtonReuse& k, double s_cq,
-                      double s_cv, bool symmetric) {
-  return k.krylov && k.matrix.valid() && k.symmetric == symmetric && k.age < k.max_age &&
-         near(s_cq, k.s_cq) && near(s_cv, k.s_cv) && volume_stiffness(model, state).empty();
+// would still serve but for its contraction, of a model without gas terms (which A leaves out).
+bool may_precondition(const NewtonReuse& k, const VolumeStiffness& gas, double s_cq, double s_cv,
+                      bool symmetric) {
+  return k.krylov && gas.empty() && k.matrix.valid() && k.symmetric == symmetric &&
+         k.age < k.max_age && near(s_cq, k.s_cq) && near(s_cv, k.s_cv);
 }
 
 // Newton with the iteration matrix kept while it contracts (docs/solvers.md, "Modified
@@ -219,7 +217,8 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     bool krylov = false;  // this fresh step solved by GMRES on the kept factor
     if (fresh) {
       dx_prev = 0;
-      if (may_precondition(model, state, k, s_cq, s_cv, symmetric)) {
+      VolumeStiffness gas = volume_stiffness(model, state);
+      if (may_precondition(k, gas, s_cq, s_cv, symmetric)) {
         int its = 0;
         krylov = krylov_solve(lin.A, k.matrix, -lin.r, kKrylov, dx, &its);
         stats.krylov_iterations += its;
@@ -228,7 +227,7 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
         ++stats.krylov_steps;
       } else {
         ++stats.factorizations;
-        if (!factor_new_matrix(model, state, lin, s_cq, s_cv, symmetric, exact_only, k, dx)) {
+        if (!factor_new_matrix(lin, std::move(gas), s_cq, s_cv, symmetric, exact_only, k, dx)) {
           return false;
         }
       }
