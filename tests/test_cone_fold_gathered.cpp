@@ -128,6 +128,18 @@ TEST(ConeFoldGathered, FoldOnTheCoarseCutCarriedOntoTheFineOneIsTheGatheredWall)
   // from the geometric wall).
   const nlohmann::json summary = nlohmann::json::parse(test::slurp(dir / "folded/summary.json"));
   EXPECT_LE(summary.at("stats").at("newton_iterations").get<int>(), 3);
+  // The coarse fold's own counts are in summary.json beside the fine run's.
+  ASSERT_EQ(summary.at("stages").size(), 1u);
+  const nlohmann::json& stage = summary.at("stages")[0];
+  EXPECT_EQ(stage.at("segments").get<int>(), 14);
+  EXPECT_GT(stage.at("stats").at("newton_iterations").get<int>(), 3);
+  // A static fold has nothing to resume: refused before the coarse fold is solved again.
+  r = test::run_finseg(dir,
+                       "run c.yaml --fold --out folded --resume --set "
+                       "folding.coarse_subdivisions=1 --set outputs.vtk=false");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--resume"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("coarse cut"), std::string::npos) << r.err;
 }
 
 // Finer than 2 x 2 a face the generator folds on 2 x 2 (at 7 x 7 the direct fold crept).

@@ -218,6 +218,7 @@ void run_scene(const RunOptions& o) {
       scene_inputs_hash(read_whole_file(o.scene) + (o.fold ? "\n# finseg run --fold" : ""), scene);
   // From a state file first, so that a folding run folds on from there.
   std::optional<State> from_file;
+  std::vector<RunStage> stages;  // solves made before this run (a coarse fold)
   if (!o.state_file.empty() && !o.resume) from_file = start_scene_from_state_file(o, scene);
   if (o.fold) {
     if (from_file && scene.folding && scene.folding->coarse_subdivisions > 0) {
@@ -225,8 +226,9 @@ void run_scene(const RunOptions& o) {
                        "not with folding.coarse_subdivisions (the coarse cut folds from the "
                        "scene's start)");
     }
-    std::optional<State> carried = make_folding_run(scene, o.quiet);
-    if (carried && !o.resume) from_file = carried;
+    FoldingStart folding = make_folding_run(scene, o.quiet, o.resume);
+    if (folding.state) from_file = std::move(folding.state);
+    stages = std::move(folding.stages);
   }
   check_output_folder(o.out, scene);
   RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
@@ -273,8 +275,8 @@ void run_scene(const RunOptions& o) {
   ProgressLine writing(
       progress_mode(o.quiet || !scene.outputs.vtk),
       [&] { return fmt::format("writing {} VTK frames to {}", frames, o.out); }, o.progress_every);
-  RunReport report = write_run_outputs(o.out, scene, rec, stats, wall,
-                                       [&](double fraction) { writing.update(fraction); });
+  RunReport report = write_run_outputs(
+      o.out, scene, rec, stats, wall, [&](double fraction) { writing.update(fraction); }, stages);
   writing.finish();
   if (fs::exists(fs::path(o.out) / kCheckpointFile)) report.files.push_back(kCheckpointFile);
   write_manifest(o.out, report.files);

@@ -24,7 +24,7 @@ double ramp_of(const Scene& scene) {
 
 // The fold solved on the pattern cut into `coarse_subdivisions` (the same scene file and
 // --set changes otherwise), carried onto `scene`'s segments.
-State fold_on_coarse_cut(const Scene& scene, bool quiet) {
+FoldingStart fold_on_coarse_cut(const Scene& scene, bool quiet) {
   const int n = scene.folding->coarse_subdivisions;
   std::vector<Override> overrides = scene.overrides;
   overrides.push_back({"pattern.subdivisions", std::to_string(n)});
@@ -49,31 +49,34 @@ State fold_on_coarse_cut(const Scene& scene, bool quiet) {
     throw DivergenceError(
         fmt::format("the fold on the coarse cut (pattern.subdivisions {}): {}", n, stats.message));
   }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!quiet) {
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     fmt::print(stderr,
                "finseg: folded on the coarse cut: {} segments, {} Newton iterations, wall {:.3g} "
                "s; carried onto {} segments\n",
                coarse.model.bodies.size(), stats.newton_iterations, wall,
                scene.model.bodies.size());
   }
-  return refine_state(coarse.model, state, scene.model, fraction);
+  const RunStage stage{fmt::format("fold on the coarse cut (pattern.subdivisions {})", n),
+                       coarse.model.bodies.size(), stats, wall};
+  return {refine_state(coarse.model, state, scene.model, fraction), {stage}};
 }
 
 }  // namespace
 
-std::optional<State> make_folding_run(Scene& scene, bool quiet) {
+FoldingStart make_folding_run(Scene& scene, bool quiet, bool resume) {
   if (!scene.folding) {
     throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
   }
-  std::optional<State> start;
-  if (scene.folding->coarse_subdivisions > 0) start = fold_on_coarse_cut(scene, quiet);
+  const bool carried = scene.folding->coarse_subdivisions > 0;
+  FoldingStart start;
+  if (carried && !resume) start = fold_on_coarse_cut(scene, quiet);
   scene.model = folding_model(scene.model, initial_state(scene.model), scene.folding->fraction,
                               ramp_of(scene));
   scene.solver = scene.folding_solver;
   // The carried poses are the fold's end: the fine model's equilibrium there, in one increment.
-  if (start) scene.solver.load_steps = 1;
+  if (carried) scene.solver.load_steps = 1;
   return start;
 }
 

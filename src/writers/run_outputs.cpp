@@ -318,7 +318,8 @@ RecorderOptions recorder_options(const Scene& scene) {
 }
 
 nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const SolverStats& stats,
-                           double wall_seconds, const RunReport& report) {
+                           double wall_seconds, const RunReport& report,
+                           const std::vector<RunStage>& stages) {
   nlohmann::json probes = nlohmann::json::object();
   for (const ProbeTable& t : rec.tables())
     probes[t.name] = probe_summary(t, deployed_at_of(scene.model, t));
@@ -343,6 +344,12 @@ nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const Sol
   };
   const PhaseSettings& ph = scene.outputs.phases;
   if (ph.enabled) j["phases"] = phases_json(run_phases(scene, rec), ph);
+  for (const RunStage& st : stages) {
+    j["stages"].push_back({{"what", st.what},
+                           {"segments", st.segments},
+                           {"wall_time_s", st.wall_seconds},
+                           {"stats", stats_json(st.stats)}});
+  }
   j["provenance"] = provenance_json(scene);
   for (const std::string& w : recorded_warnings()) j["warnings"].push_back(w);
   return j;
@@ -350,7 +357,8 @@ nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const Sol
 
 RunReport write_run_outputs(const std::string& dir, const Scene& scene, const RunRecorder& rec,
                             const SolverStats& stats, double wall_seconds,
-                            const std::function<void(double)>& on_progress) {
+                            const std::function<void(double)>& on_progress,
+                            const std::vector<RunStage>& stages) {
   fs::create_directories(dir);
   RunReport report;
   nlohmann::json probes = nlohmann::json::object();
@@ -418,7 +426,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
                            rec.frames(), curve, axis, notes);
     });
   }
-  report.summary = run_summary(scene, rec, stats, wall_seconds, report);
+  report.summary = run_summary(scene, rec, stats, wall_seconds, report, stages);
   // Invalid UTF-8 is refused before the run (writers/output_folder.hpp); should any text
   // still carry some, the summary must not be lost for it.
   write_file_atomically(

@@ -53,17 +53,29 @@ struct RunReport {
   nlohmann::json summary;             ///< summary.json's object
 };
 
+/// A solve made before the run on another model (the fold on a coarser cut of the pattern),
+/// reported in summary.json's `stages`.
+struct RunStage {
+  std::string what;  ///< e.g. "fold on the coarse cut (pattern.subdivisions 2)"
+  std::size_t segments = 0;
+  SolverStats stats;
+  double wall_seconds = 0;
+};
+
 /// summary.json's object (docs/scene.md): scene, status, solver and its statistics, model
-/// counts, probe_summary per probe, phases, provenance and warnings; `report` gives the
-/// files written and the warnings of outputs not written (none when nothing was written).
+/// counts, probe_summary per probe, phases, provenance and warnings, and `stages` where there
+/// were any; `report` gives the files written and the warnings of outputs not written (none
+/// when nothing was written).
 nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const SolverStats& stats,
-                           double wall_seconds, const RunReport& report = {});
+                           double wall_seconds, const RunReport& report = {},
+                           const std::vector<RunStage>& stages = {});
 
 /// Writes the run's files into `dir` (created if needed); summary.json is written last.
 /// `wall_seconds` is the whole run's wall time; `on_progress` gets the fraction of the VTK
-/// frames written (the long part of large outputs).
+/// frames written (the long part of large outputs); `stages` go into summary.json.
 RunReport write_run_outputs(const std::string& dir, const Scene& scene, const RunRecorder& rec,
                             const SolverStats& stats, double wall_seconds,
-                            const std::function<void(double)>& on_progress = {});
+                            const std::function<void(double)>& on_progress = {},
+                            const std::vector<RunStage>& stages = {});
 
 }  // namespace finseg
