@@ -156,12 +156,7 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
 // (docs/state-file.md): its poses, crease history and contact anchors, drives starting from
 // where their points are.
 State start_scene_from_state_file(const RunOptions& o, Scene& scene) {
-  State start = read_state_file(o.state_file, scene.model).state;
-  start.t = 0;
-  start.solver = SolverMemory{};
-  std::fill(start.drive_s.begin(), start.drive_s.end(), 0.0);
-  scene.model = model_starting_from(scene.model, start);
-  return start;
+  return start_fresh_from(scene, read_state_file(o.state_file, scene.model).state);
 }
 
 // Periodic checkpoints from the output callback; a checkpoint that cannot be written is a

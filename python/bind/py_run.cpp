@@ -12,6 +12,7 @@
 #include "core/warnings.hpp"
 #include "py_errors.hpp"
 #include "py_scene.hpp"
+#include "scene/state_start.hpp"
 #include "solvers/stop_request.hpp"
 #include "writers/checkpoint.hpp"
 #include "writers/output_folder.hpp"
@@ -87,13 +88,12 @@ pyb::dict pairs_dict(const ProbeTable& t, const Model& model) {
 }
 
 // The state a run starts from: the scene's initial state, or `start` checked against the
-// model as a state file would be (--state: a fresh run, the solver memory not used).
-State starting_state(const Scene& scene, const PyState* start) {
+// model as a state file would be and made a fresh run's start as --state does (time and
+// drives from 0, the model starting there).
+State starting_state(Scene& scene, const PyState* start) {
   if (!start) return initial_state(scene.model);
   const nlohmann::json j = state_json(start->scene->model, {start->state, start->scene_hash});
-  State s = parse_state_json(j, scene.model, "<python state>").state;
-  s.solver = SolverMemory{};
-  return s;
+  return start_fresh_from(scene, parse_state_json(j, scene.model, "<python state>").state);
 }
 
 PyResult run(const PyScene& base, const std::optional<std::string>& solver,
@@ -103,7 +103,7 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
   std::vector<Override> overrides = base.overrides;
   if (solver) overrides.push_back({"solver.type", *solver});
   const PyScene ps(base.text, base.file, overrides);
-  const Scene& scene = *ps.scene;
+  Scene scene = *ps.scene;  // a start state moves its initial configuration
   if (threads < 0 || threads > 1024)
     throw InputError("<python>", "threads", "must be 0 (one per core) .. 1024");
   // The thread count is process-wide: each run sets its own and puts the previous back.

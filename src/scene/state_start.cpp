@@ -1,5 +1,7 @@
 #include "scene/state_start.hpp"
 
+#include <algorithm>
+
 #include "elements/chamber_surface.hpp"
 
 namespace finseg {
@@ -22,6 +24,14 @@ Model model_starting_from(const Model& m, const State& s) {
   }
   for (ChamberDef& def : out.chambers) def.initial_volume = surface_volume(s, def);
   return out;
+}
+
+State start_fresh_from(Scene& scene, State start) {
+  start.t = 0;
+  start.solver = SolverMemory{};
+  std::fill(start.drive_s.begin(), start.drive_s.end(), 0.0);
+  scene.model = model_starting_from(scene.model, start);
+  return start;
 }
 
 }  // namespace finseg

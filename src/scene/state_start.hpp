@@ -5,6 +5,7 @@
 
 #include "model/model.hpp"
 #include "model/state.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace finseg {
 
@@ -12,5 +13,10 @@ namespace finseg {
 /// drive's start at its point's position in `s`, each crease's initial fold angle from the
 /// history, each chamber's initial volume. Stiffness, laws and rest shapes are unchanged.
 Model model_starting_from(const Model& m, const State& s);
+
+/// `start` (a state of `scene.model`) made the start of a fresh run of `scene`, as `finseg run
+/// --state` does: time and drive displacements back to 0, no solver memory, and `scene.model`
+/// starting from `start` (model_starting_from). Returns the state to run from.
+State start_fresh_from(Scene& scene, State start);
 
 }  // namespace finseg
