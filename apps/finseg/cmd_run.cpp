@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "apps/finseg/commands.hpp"
-#include "apps/finseg/folding_run.hpp"
 #include "apps/finseg/progress.hpp"
 #include "core/error.hpp"
 #include "core/threads.hpp"
 #include "probes/recorder.hpp"
+#include "scene/folding_run.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
 #include "scene/state_start.hpp"
@@ -201,6 +201,34 @@ class Checkpointer {
   throw ExitStatus{sig == SIGTERM ? 143 : 130};
 }
 
+// The folding run (scene/folding_run.hpp) with a progress line for a fold on a coarse cut
+// and, unless quiet, a line of its counts.
+FoldingStart fold_with_progress(Scene& scene, const std::string& yaml, const RunOptions& o) {
+  std::size_t segments = 0;
+  int subdivisions = 0;
+  ProgressLine progress(
+      progress_mode(o.quiet),
+      [&] {
+        return fmt::format("folding on the coarse cut ({} segments, pattern.subdivisions {})",
+                           segments, subdivisions);
+      },
+      5.0);
+  FoldingStart folding =
+      make_folding_run(scene, yaml, o.resume, [&](std::size_t n, int cut, double fraction) {
+        segments = n;
+        subdivisions = cut;
+        progress.update(fraction);
+      });
+  progress.finish();
+  for (const RunStage& st : o.quiet ? std::vector<RunStage>{} : folding.stages) {
+    fmt::print(stderr,
+               "finseg: folded on the coarse cut: {} segments, {} Newton iterations, wall {:.3g} "
+               "s; carried onto {} segments\n",
+               st.segments, st.stats.newton_iterations, st.wall_seconds, scene.model.bodies.size());
+  }
+  return folding;
+}
+
 void run_scene(const RunOptions& o) {
   const auto start = Clock::now();
   set_thread_count(o.threads > 0 ? o.threads : thread_count());
@@ -209,8 +237,8 @@ void run_scene(const RunOptions& o) {
   Scene scene = read_scene(o.scene, overrides);
   // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
   // table or an override changed is refused; a folding run's checkpoint is not its scene's.
-  const std::string hash =
-      scene_inputs_hash(read_whole_file(o.scene) + (o.fold ? "\n# finseg run --fold" : ""), scene);
+  const std::string yaml = read_whole_file(o.scene);
+  const std::string hash = scene_inputs_hash(yaml + (o.fold ? "\n# finseg run --fold" : ""), scene);
   // From a state file first, so that a folding run folds on from there.
   std::optional<State> from_file;
   std::vector<RunStage> stages;  // solves made before this run (a coarse fold)
@@ -221,7 +249,7 @@ void run_scene(const RunOptions& o) {
                        "not with folding.coarse_subdivisions (the coarse cut folds from the "
                        "scene's start)");
     }
-    FoldingStart folding = make_folding_run(scene, o.quiet, o.resume);
+    FoldingStart folding = fold_with_progress(scene, yaml, o);
     if (folding.state) from_file = std::move(folding.state);
     stages = std::move(folding.stages);
   }

@@ -12,6 +12,7 @@
 #include "core/warnings.hpp"
 #include "py_errors.hpp"
 #include "py_scene.hpp"
+#include "scene/folding_run.hpp"
 #include "scene/state_start.hpp"
 #include "solvers/stop_request.hpp"
 #include "writers/checkpoint.hpp"
@@ -97,10 +98,14 @@ State starting_state(Scene& scene, const PyState* start) {
 }
 
 PyResult run(const PyScene& base, const std::optional<std::string>& solver,
-             const std::optional<std::string>& out, const PyState* start, int threads) {
+             const std::optional<std::string>& out, const PyState* start, int threads, bool fold) {
   const auto t0 = Clock::now();
   clear_recorded_warnings();  // summary.json lists this run's warnings only
   std::vector<Override> overrides = base.overrides;
+  if (solver && fold) {
+    throw InputError("<python>", "solver",
+                     "not with fold: the fold runs folding.solver (with_set it to change it)");
+  }
   if (solver) overrides.push_back({"solver.type", *solver});
   const PyScene ps(base.text, base.file, overrides);
   Scene scene = *ps.scene;  // a start state moves its initial configuration
@@ -112,8 +117,21 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
     ~ThreadsGuard() { set_thread_count(previous); }
   } threads_guard;
   set_thread_count(threads > 0 ? threads : thread_count());
-  const std::string hash = scene_inputs_hash(ps.text, scene);
+  // A folding run's checkpoint is not its scene's run's (as finseg run --fold hashes it).
+  const std::string hash =
+      scene_inputs_hash(ps.text + (fold ? "\n# finseg run --fold" : ""), scene);
   State state = starting_state(scene, start);
+  std::vector<RunStage> stages;
+  if (fold) {
+    if (start && scene.folding && scene.folding->coarse_subdivisions > 0) {
+      throw InputError("<python>", "state",
+                       "not with folding.coarse_subdivisions (the coarse cut folds from the "
+                       "scene's start)");
+    }
+    FoldingStart folding = make_folding_run(scene, ps.text, false);
+    state = folding.state ? std::move(*folding.state) : initial_state(scene.model);
+    stages = std::move(folding.stages);
+  }
   if (out) {
     check_output_folder(*out, scene);
     remove_previous_run(*out);
@@ -141,12 +159,12 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
   PyResult r{ps.scene, rec.tables(), {}, state_of(ps, state), rec.abscissa(), out};
   if (out) {
     if (stats.status == "ok") write_checkpoint(*out, scene.model, {state, hash}, rec);
-    RunReport report = write_run_outputs(*out, scene, rec, stats, wall);
+    RunReport report = write_run_outputs(*out, scene, rec, stats, wall, {}, stages);
     if (stats.status == "ok") report.files.push_back(kCheckpointFile);
     write_manifest(*out, report.files);
     r.summary = report.summary;
   } else {
-    r.summary = run_summary(scene, rec, stats, wall);
+    r.summary = run_summary(scene, rec, stats, wall, {}, stages);
   }
   if (interrupted) {
     PyErr_SetNone(PyExc_KeyboardInterrupt);
@@ -195,18 +213,19 @@ void bind_run(pyb::module_& m, pyb::class_<PyScene>& scene) {
   scene.def(
       "run",
       [](const PyScene& s, const std::optional<std::string>& solver,
-         const std::optional<std::string>& out, const PyState* state, int threads) {
-        PyResult r = run(s, solver, out, state, threads);
+         const std::optional<std::string>& out, const PyState* state, int threads, bool fold) {
+        PyResult r = run(s, solver, out, state, threads, fold);
         if (r.summary.value("status", std::string()) == "ok") return r;
         const std::string message =
             s.file + ": the simulation diverged: " + r.summary.value("message", std::string());
         raise_python("DivergenceError", pyb::make_tuple(message, pyb::cast(std::move(r))));
       },
       pyb::arg("solver") = pyb::none(), pyb::arg("out") = pyb::none(),
-      pyb::arg("state") = pyb::none(), pyb::arg("threads") = 0,
+      pyb::arg("state") = pyb::none(), pyb::arg("threads") = 0, pyb::arg("fold") = false,
       "run the scene (solver: 'static', 'implicit' or 'explicit' overrides the scene's, as "
       "--set solver.type=...); out: also write finseg run's output folder; state: start "
-      "from this State (as --state); threads: force-element threads (0: one per core). "
+      "from this State (as --state); threads: force-element threads (0: one per core); "
+      "fold: run the scene's folding run instead (as --fold; not with solver). "
       "Raises InputError, DivergenceError (its .result holds what was recorded), "
       "KeyboardInterrupt on Ctrl-C (outputs written first).");
 }

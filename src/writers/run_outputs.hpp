@@ -11,6 +11,7 @@
 
 #include "probes/recorder.hpp"
 #include "scene/scene_reader.hpp"
+#include "solvers/run_stage.hpp"
 
 namespace finseg {
 
@@ -51,15 +52,6 @@ struct RunReport {
   std::vector<std::string> files;     ///< written, relative to the output folder
   std::vector<std::string> warnings;  ///< optional outputs that could not be written
   nlohmann::json summary;             ///< summary.json's object
-};
-
-/// A solve made before the run on another model (the fold on a coarser cut of the pattern),
-/// reported in summary.json's `stages`.
-struct RunStage {
-  std::string what;  ///< e.g. "fold on the coarse cut (pattern.subdivisions 2)"
-  std::size_t segments = 0;
-  SolverStats stats;
-  double wall_seconds = 0;
 };
 
 /// summary.json's object (docs/scene.md): scene, status, solver and its statistics, model

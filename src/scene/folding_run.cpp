@@ -1,4 +1,4 @@
-#include "apps/finseg/folding_run.hpp"
+#include "scene/folding_run.hpp"
 
 #include <fmt/format.h>
 
@@ -6,13 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "apps/finseg/progress.hpp"
 #include "core/error.hpp"
 #include "generators/folding.hpp"
 #include "generators/state_refinement.hpp"
-#include "solvers/solver.hpp"
 
-namespace finseg::cli {
+namespace finseg {
 
 namespace {
 
@@ -22,56 +20,46 @@ double ramp_of(const Scene& scene) {
   return scene.folding_solver.kind == SolverKind::Static ? 1.0 : scene.folding->duration;
 }
 
-// The fold solved on the pattern cut into `coarse_subdivisions` (the same scene file and
-// --set changes otherwise), carried onto `scene`'s segments.
-FoldingStart fold_on_coarse_cut(const Scene& scene, bool quiet) {
+// The fold solved on the pattern cut into `coarse_subdivisions` (the same scene text and
+// overrides otherwise), carried onto `scene`'s segments.
+FoldingStart fold_on_coarse_cut(const Scene& scene, const std::string& yaml,
+                                const CoarseFoldProgress& progress) {
   const int n = scene.folding->coarse_subdivisions;
   std::vector<Override> overrides = scene.overrides;
   overrides.push_back({"pattern.subdivisions", std::to_string(n)});
   overrides.push_back({"folding.coarse_subdivisions", "0"});
-  Scene coarse = read_scene(scene.file, overrides);
+  Scene coarse = parse_scene(yaml, scene.file, overrides);
   const double fraction = scene.folding->fraction;
   coarse.model = folding_model(coarse.model, initial_state(coarse.model), fraction, ramp_of(scene));
   State state = initial_state(coarse.model);
-  ProgressLine progress(
-      progress_mode(quiet),
-      [&] {
-        return fmt::format("folding on the coarse cut ({} segments, pattern.subdivisions {})",
-                           coarse.model.bodies.size(), n);
-      },
-      5.0);
+  const std::size_t segments = coarse.model.bodies.size();
   const auto start = std::chrono::steady_clock::now();
   const SolverStats stats = run_solver(
       coarse.model, state, scene.folding_solver, [](const State&, const BodyForces&) {},
-      [&](const SolverProgress& p) { progress.update(p.fraction); });
-  progress.finish();
+      [&](const SolverProgress& p) {
+        if (progress) progress(segments, n, p.fraction);
+      });
   if (stats.status != "ok") {
     throw DivergenceError(
         fmt::format("the fold on the coarse cut (pattern.subdivisions {}): {}", n, stats.message));
   }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!quiet) {
-    fmt::print(stderr,
-               "finseg: folded on the coarse cut: {} segments, {} Newton iterations, wall {:.3g} "
-               "s; carried onto {} segments\n",
-               coarse.model.bodies.size(), stats.newton_iterations, wall,
-               scene.model.bodies.size());
-  }
-  const RunStage stage{fmt::format("fold on the coarse cut (pattern.subdivisions {})", n),
-                       coarse.model.bodies.size(), stats, wall};
+  const RunStage stage{fmt::format("fold on the coarse cut (pattern.subdivisions {})", n), segments,
+                       stats, wall};
   return {refine_state(coarse.model, state, scene.model, fraction), {stage}};
 }
 
 }  // namespace
 
-FoldingStart make_folding_run(Scene& scene, bool quiet, bool resume) {
+FoldingStart make_folding_run(Scene& scene, const std::string& yaml, bool resume,
+                              const CoarseFoldProgress& progress) {
   if (!scene.folding) {
     throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
   }
   const bool carried = scene.folding->coarse_subdivisions > 0;
   FoldingStart start;
-  if (carried && !resume) start = fold_on_coarse_cut(scene, quiet);
+  if (carried && !resume) start = fold_on_coarse_cut(scene, yaml, progress);
   scene.model = folding_model(scene.model, initial_state(scene.model), scene.folding->fraction,
                               ramp_of(scene));
   scene.solver = scene.folding_solver;
@@ -80,4 +68,4 @@ FoldingStart make_folding_run(Scene& scene, bool quiet, bool resume) {
   return start;
 }
 
-}  // namespace finseg::cli
+}  // namespace finseg
