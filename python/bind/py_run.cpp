@@ -128,7 +128,10 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
                        "not with folding.coarse_subdivisions (the coarse cut folds from the "
                        "scene's start)");
     }
-    FoldingStart folding = make_folding_run(scene, ps.text, false);
+    // Ctrl-C during a fold on the coarse cut (which writes nothing) ends it at once.
+    FoldingStart folding = make_folding_run(scene, ps.text, false, [](std::size_t, int, double) {
+      if (PyErr_CheckSignals() != 0) throw pyb::error_already_set();
+    });
     state = folding.state ? std::move(*folding.state) : initial_state(scene.model);
     stages = std::move(folding.stages);
   }
