@@ -130,6 +130,19 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
                    field);
   }
   expect_refused(dir, "gen cone --top open --base open --inflate --out l.yaml", "--inflate");
+  for (const char* bad : {"--stowed 150", "--gathered 0.5", "--fold-to-gathered 0.5"}) {
+    expect_refused(dir,
+                   std::string("gen cone --top open --base open --wrap ") + bad + " --out l.yaml",
+                   "--wrap");
+  }
+  // The wrap assignment's scene says so in its header, and its pattern reads back.
+  ASSERT_EQ(run_finseg(dir,
+                       "gen cone --top open --base open --wrap --pleats 3 --axial-folds 1 "
+                       "--subdivisions 1 --out w.yaml")
+                .code,
+            0);
+  EXPECT_NE(test::slurp(dir / "w.yaml").find("--wrap: pleats + 1 mountains"), std::string::npos);
+  EXPECT_EQ(run_finseg(dir, "inspect w.yaml").code, 0);
   for (const char* bad : {"--stowed 150", "--top open --base open --stowed 181"}) {
     expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--stowed");
   }

@@ -75,8 +75,7 @@ TEST(ConePattern, FoldedFormIsTheFacetedConeAndTheDevelopmentItsIsometry) {
   }
 }
 
-TEST(ConePattern, InteriorRingVerticesAreFlatFoldable) {
-  const ConeSpec s = open_cone();
+void expect_flat_foldable(const ConeSpec& s) {
   const CreasePattern p = cone_crease_pattern(s);
   std::map<int, std::vector<int>> around;  // vertex -> its edges
   for (std::size_t e = 0; e < p.edges.size(); ++e) {
@@ -104,6 +103,41 @@ TEST(ConePattern, InteriorRingVerticesAreFlatFoldable) {
     EXPECT_EQ(std::abs(mountains - valleys), 2) << "Maekawa at vertex " << v;
   }
   EXPECT_EQ(interior, 2 * s.pleats * s.axial_folds);  // every generator on every inner ring
+}
+
+TEST(ConePattern, InteriorRingVerticesAreFlatFoldable) {
+  expect_flat_foldable(open_cone());
+}
+
+// The wrap assignment: generator 0 turned to a mountain, so that 2 x pleats generators at 180
+// degrees turn the section once round (pleats + 1 mountains, pleats - 1 valleys), every ring
+// vertex still flat-foldable; the fan fold's stack and gathered wall refuse it.
+TEST(ConePattern, WrapAssignmentTurnsOneGeneratorAndStaysFlatFoldable) {
+  ConeSpec s = open_cone();
+  s.wrap = true;
+  expect_flat_foldable(s);
+  const CreasePattern fan = cone_crease_pattern(open_cone()), wrap = cone_crease_pattern(s);
+  ASSERT_EQ(fan.edges.size(), wrap.edges.size());
+  int turned = 0, mountains = 0, valleys = 0;
+  for (std::size_t e = 0; e < wrap.edges.size(); ++e) {
+    const auto [a, b] = wrap.edges[e].vertices;
+    const Vec2 d = wrap.vertices_flat_m[b] - wrap.vertices_flat_m[a];
+    const Vec2 mid = 0.5 * (wrap.vertices_flat_m[a] + wrap.vertices_flat_m[b]);
+    const bool generator = std::abs(d.x() * mid.y() - d.y() * mid.x()) < 1e-12 * d.norm();
+    if (!generator || wrap.edges[e].face_count() != 2) continue;  // radial interior edges
+    mountains += wrap.edges[e].assignment == EdgeAssignment::Mountain;
+    valleys += wrap.edges[e].assignment == EdgeAssignment::Valley;
+    if (wrap.edges[e].assignment != fan.edges[e].assignment) {
+      ++turned;
+      EXPECT_EQ(wrap.edges[e].fold_angle, -fan.edges[e].fold_angle);
+    }
+  }
+  const int bands = s.axial_folds + 1;
+  EXPECT_EQ(turned, bands);  // one generator, all along its length
+  EXPECT_EQ(mountains, (s.pleats + 1) * bands);
+  EXPECT_EQ(valleys, (s.pleats - 1) * bands);
+  EXPECT_THROW(cone_fan_stack(s, wrap, 0), InputError);
+  EXPECT_THROW(cone_gathered(s, wrap, 0.5), InputError);
 }
 
 TEST(ConePattern, OpenEndsLeaveTheirDiscsOut) {

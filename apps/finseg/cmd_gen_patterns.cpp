@@ -297,6 +297,10 @@ void register_cone(CLI::App* gen) {
       "start from the deployed cone and let `finseg run --fold` gather it by simulation, share "
       "[0, 1) as for --gathered (open ends only; static solver, --fold-steps or 20 load steps); "
       "deploy from its checkpoint with --state: a base facet pulled back out as for --gathered");
+  c->add_flag("--wrap", s->wrap,
+              "generator 0 a mountain too: pleats + 1 mountains among the generators, the "
+              "assignment a flat stack with thickness needs (docs/folding.md); not with "
+              "--stowed, --gathered or --fold-to-gathered");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
                gathered, gathered_option, inflate, fold_gather, fold_gather_option] {
@@ -343,6 +347,11 @@ void register_cone(CLI::App* gen) {
     if (to_gathered && fraction_option->count() > 0) {
       throw InputError("<cli>", "--fold-fraction",
                        "not with --fold-to-gathered (its share says how far the wall gathers)");
+    }
+    if (s->wrap && (from_stack || from_gathered || to_gathered)) {
+      throw InputError("<cli>", "--wrap",
+                       "the fan stack and the gathered wall are the fan fold's: not with --stowed, "
+                       "--gathered or --fold-to-gathered");
     }
     CreasePattern p;
     in_scene_file(
@@ -439,7 +448,7 @@ void register_cone(CLI::App* gen) {
     const std::string yaml = fmt::format(
         "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
         "axial folds,\n"
-        "# top {}, base {}.\n"
+        "# top {}, base {}{}.\n"
         "{}"
         "title: {}\n{}"
         "fixtures: {{panels: [{}]}}   # {}\n"
@@ -466,7 +475,10 @@ void register_cone(CLI::App* gen) {
         "         newton_tolerance: 0.1}}\n"
         "outputs: {{vtk: true, html: true, plot: true}}\n",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
-        ends->second, how_to_run,
+        ends->second,
+        s->wrap ? ",\n# generator 0 a mountain too (--wrap: pleats + 1 mountains, docs/folding.md)"
+                : "",
+        how_to_run,
         from_gathered ? "gathered cone, a base facet pulled back out"
         : to_gathered ? "cone gathered by folding, a base facet pulled back out"
                       : "folded cone pulled open by its top",

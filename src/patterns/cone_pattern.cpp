@@ -156,7 +156,7 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   // (the stacked facets lie alternately mirrored) and ring by ring (a Z-fold of the stack).
   // Every ring vertex: the generator's two creases one kind, the ring's two opposite
   // (Maekawa), sector angles psi, pi - psi, pi - psi, psi (Kawasaki).
-  auto generator_sign = [](int k) { return k % 2 == 0 ? 1.0 : -1.0; };
+  auto generator_sign = [&](int k) { return k % 2 == 0 && !(s.wrap && k == 0) ? 1.0 : -1.0; };
   auto ring_sign = [&](int r, int wedge) {  // wedge 0 is the far part of wedge G's facet
     return ((r + (wedge == 0 ? G : wedge)) % 2 == 0) ? 1.0 : -1.0;
   };
@@ -200,6 +200,7 @@ std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, doub
     throw InputError("<api>", s.top_disc ? "top_disc" : "base_disc",
                      "the fan stack is the open wall's: both ends must be open");
   }
+  if (s.wrap) throw InputError("<api>", "wrap", "the fan stack is the fan fold's (wrap = false)");
   if (!(ring_angle >= 0 && ring_angle <= kPi)) {
     throw InputError("<api>", "ring_angle",
                      fmt::format("{} deg; allowed range [0, 180] deg", ring_angle / kDegToRad));
@@ -240,6 +241,9 @@ std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, doubl
   if (s.top_disc || s.base_disc) {
     throw InputError("<api>", s.top_disc ? "top_disc" : "base_disc",
                      "a disc blocks the gathering: both ends must be open");
+  }
+  if (s.wrap) {
+    throw InputError("<api>", "wrap", "the gathered wall is the fan fold's (wrap = false)");
   }
   if (!(gather >= 0 && gather < 1)) {
     throw InputError("<api>", "gather", fmt::format("{}; allowed range [0, 1)", gather));

@@ -27,6 +27,12 @@ struct ConeSpec {
   double hub_fraction = 0.3;  ///< end discs: rigid hub radius over the ring's, (0, 1)
   bool top_disc = true;       ///< a disc closes the top ring (else the top is open)
   bool base_disc = true;      ///< a disc closes the base ring (else the base is open)
+  /// Generator 0 a mountain too: pleats + 1 mountains and pleats - 1 valleys among the
+  /// generators, the count a flat stack of the wall with thickness needs (its section must
+  /// turn once round; docs/folding.md, "Folding with one generator turned"). Maekawa and
+  /// Kawasaki hold as for the fan fold; the fan stack and the gathered wall are the fan
+  /// fold's and refuse it.
+  bool wrap = false;
 };
 
 /// Faces of the pattern: band b (0 at the top) of wedge w is face b (2 pleats + 1) + w
