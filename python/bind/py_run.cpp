@@ -132,7 +132,13 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
     FoldingStart folding = make_folding_run(scene, ps.text, false, [](std::size_t, int, double) {
       if (PyErr_CheckSignals() != 0) throw pyb::error_already_set();
     });
-    state = folding.state ? std::move(*folding.state) : initial_state(scene.model);
+    // From the coarse fold, else from `start` (its velocities and history kept, as --state
+    // with --fold keeps them), else the folding model's own start.
+    if (folding.state) {
+      state = std::move(*folding.state);
+    } else if (!start) {
+      state = initial_state(scene.model);
+    }
     stages = std::move(folding.stages);
   }
   if (out) {

@@ -40,6 +40,25 @@ def test_fold_and_deploy_as_the_command_line(tmp_path, finseg_cli):
         assert as_csv_cells(deployed.probes["top"][column]) == cells, column
 
 
+def test_fold_from_a_state_as_the_command_line(tmp_path, finseg_cli):
+    """A fold started from a state (a second fold from the first's end) keeps the state's
+    history and velocities, as `finseg run --fold --state FILE` does."""
+    gen = finseg_cli("gen", "cone", "--top", "open", "--base", "open", "--pleats", "3",
+                     "--axial-folds", "1", "--subdivisions", "1", "--fold-fraction", "0.3",
+                     "--out", "c.yaml", cwd=tmp_path)  # an implicit (dynamic) fold
+    assert gen.returncode == 0, gen.stderr
+    for args in (["--out", "f1"], ["--state", "f1/checkpoint.json", "--out", "f2"]):
+        cli = finseg_cli("run", "c.yaml", "--fold", "--quiet", *args, *QUIET, cwd=tmp_path)
+        assert cli.returncode == 0, cli.stderr
+    scene = finseg.load(str(tmp_path / "c.yaml"))
+    first = scene.read_state(str(tmp_path / "f1/checkpoint.json"))
+    assert np.abs(first.w_W).max() > 0  # it ends moving: the velocities count
+    again = scene.run(fold=True, state=first).state
+    from_cli = scene.read_state(str(tmp_path / "f2/checkpoint.json"))
+    assert np.array_equal(again.p_W, from_cli.p_W)
+    assert np.array_equal(again.R_WB, from_cli.R_WB)
+
+
 def test_fold_refuses_a_solver(tmp_path, finseg_cli):
     gen = finseg_cli("gen", "cone", "--top", "open", "--base", "open", "--pleats", "3",
                      "--axial-folds", "1", "--subdivisions", "1", "--fold-to-gathered", "0.5",
