@@ -174,6 +174,12 @@ TEST(ConeFoldGathered, CoarseFoldsThatCannotBeMadeAreRefused) {
                            "pattern.subdivisions=2 --set folding.coarse_subdivisions=1 --set "
                            "folding.solver.type=implicit",
                        "folding.coarse_subdivisions");
+  // Nor from a start state: the coarse cut folds from the scene's start.
+  ASSERT_EQ(test::run_finseg(dir, fold + "pattern.subdivisions=2").code, 0);
+  test::expect_refused(dir,
+                       "run c.yaml --fold --state f/checkpoint.json --out g --quiet --set "
+                       "pattern.subdivisions=2 --set folding.coarse_subdivisions=1",
+                       "folding.coarse_subdivisions");
 }
 
 TEST(ConeFoldGathered, BadOptionsAreRefused) {

@@ -203,7 +203,8 @@ class Checkpointer {
 
 // The folding run (scene/folding_run.hpp) with a progress line for a fold on a coarse cut
 // and, unless quiet, a line of its counts.
-FoldingStart fold_with_progress(Scene& scene, const std::string& yaml, const RunOptions& o) {
+FoldingStart fold_with_progress(Scene& scene, const std::string& yaml, const RunOptions& o,
+                                bool from_state) {
   std::size_t segments = 0;
   int subdivisions = 0;
   ProgressLine progress(
@@ -213,14 +214,15 @@ FoldingStart fold_with_progress(Scene& scene, const std::string& yaml, const Run
                            segments, subdivisions);
       },
       5.0);
-  FoldingStart folding =
-      make_folding_run(scene, yaml, o.resume, [&](std::size_t n, int cut, double fraction) {
-        segments = n;
-        subdivisions = cut;
-        progress.update(fraction);
-      });
+  FoldingStart folding = make_folding_run(scene, yaml, o.resume, from_state,
+                                          [&](std::size_t n, int cut, double fraction) {
+                                            segments = n;
+                                            subdivisions = cut;
+                                            progress.update(fraction);
+                                          });
   progress.finish();
-  for (const RunStage& st : o.quiet ? std::vector<RunStage>{} : folding.stages) {
+  if (o.quiet) return folding;
+  for (const RunStage& st : folding.stages) {
     fmt::print(stderr,
                "finseg: folded on the coarse cut: {} segments, {} Newton iterations, wall {:.3g} "
                "s; carried onto {} segments\n",
@@ -238,18 +240,13 @@ void run_scene(const RunOptions& o) {
   // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
   // table or an override changed is refused; a folding run's checkpoint is not its scene's.
   const std::string yaml = read_whole_file(o.scene);
-  const std::string hash = scene_inputs_hash(yaml + (o.fold ? "\n# finseg run --fold" : ""), scene);
+  const std::string hash = scene_inputs_hash(yaml + (o.fold ? kFoldingRunMark : ""), scene);
   // From a state file first, so that a folding run folds on from there.
   std::optional<State> from_file;
   std::vector<RunStage> stages;  // solves made before this run (a coarse fold)
   if (!o.state_file.empty() && !o.resume) from_file = start_scene_from_state_file(o, scene);
   if (o.fold) {
-    if (from_file && scene.folding && scene.folding->coarse_subdivisions > 0) {
-      throw InputError(o.state_file, "--state",
-                       "not with folding.coarse_subdivisions (the coarse cut folds from the "
-                       "scene's start)");
-    }
-    FoldingStart folding = fold_with_progress(scene, yaml, o);
+    FoldingStart folding = fold_with_progress(scene, yaml, o, from_file.has_value());
     if (folding.state) from_file = std::move(folding.state);
     stages = std::move(folding.stages);
   }

@@ -88,12 +88,10 @@ pyb::dict pairs_dict(const ProbeTable& t, const Model& model) {
   return d;
 }
 
-// The state a run starts from: the scene's initial state, or `start` checked against the
-// model as a state file would be and made a fresh run's start as --state does (time and
-// drives from 0, the model starting there).
-State starting_state(Scene& scene, const PyState* start) {
-  if (!start) return initial_state(scene.model);
-  const nlohmann::json j = state_json(start->scene->model, {start->state, start->scene_hash});
+// `start` checked against the model as a state file would be and made a fresh run's start
+// as --state does (time and drives from 0, the model starting there).
+State start_from(Scene& scene, const PyState& start) {
+  const nlohmann::json j = state_json(start.scene->model, {start.state, start.scene_hash});
   return start_fresh_from(scene, parse_state_json(j, scene.model, "<python state>").state);
 }
 
@@ -118,29 +116,22 @@ PyResult run(const PyScene& base, const std::optional<std::string>& solver,
   } threads_guard;
   set_thread_count(threads > 0 ? threads : thread_count());
   // A folding run's checkpoint is not its scene's run's (as finseg run --fold hashes it).
-  const std::string hash =
-      scene_inputs_hash(ps.text + (fold ? "\n# finseg run --fold" : ""), scene);
-  State state = starting_state(scene, start);
+  const std::string hash = scene_inputs_hash(ps.text + (fold ? kFoldingRunMark : ""), scene);
+  // As finseg run: from `start`, then folded on from there (or from the coarse cut's fold),
+  // else from the (folding) model's initial state.
+  std::optional<State> from;
+  if (start) from = start_from(scene, *start);
   std::vector<RunStage> stages;
   if (fold) {
-    if (start && scene.folding && scene.folding->coarse_subdivisions > 0) {
-      throw InputError("<python>", "state",
-                       "not with folding.coarse_subdivisions (the coarse cut folds from the "
-                       "scene's start)");
-    }
     // Ctrl-C during a fold on the coarse cut (which writes nothing) ends it at once.
-    FoldingStart folding = make_folding_run(scene, ps.text, false, [](std::size_t, int, double) {
-      if (PyErr_CheckSignals() != 0) throw pyb::error_already_set();
-    });
-    // From the coarse fold, else from `start` (its velocities and history kept, as --state
-    // with --fold keeps them), else the folding model's own start.
-    if (folding.state) {
-      state = std::move(*folding.state);
-    } else if (!start) {
-      state = initial_state(scene.model);
-    }
+    FoldingStart folding =
+        make_folding_run(scene, ps.text, false, from.has_value(), [](std::size_t, int, double) {
+          if (PyErr_CheckSignals() != 0) throw pyb::error_already_set();
+        });
+    if (folding.state) from = std::move(folding.state);
     stages = std::move(folding.stages);
   }
+  State state = from ? std::move(*from) : initial_state(scene.model);
   if (out) {
     check_output_folder(*out, scene);
     remove_previous_run(*out);

@@ -52,12 +52,17 @@ FoldingStart fold_on_coarse_cut(const Scene& scene, const std::string& yaml,
 
 }  // namespace
 
-FoldingStart make_folding_run(Scene& scene, const std::string& yaml, bool resume,
+FoldingStart make_folding_run(Scene& scene, const std::string& yaml, bool resume, bool from_state,
                               const CoarseFoldProgress& progress) {
   if (!scene.folding) {
     throw InputError(scene.file, "folding", "--fold needs a folding: section (docs/folding.md)");
   }
   const bool carried = scene.folding->coarse_subdivisions > 0;
+  if (carried && from_state) {
+    throw InputError(scene.file, "folding.coarse_subdivisions",
+                     "not from a start state (--state): the coarse cut folds from the scene's "
+                     "start");
+  }
   FoldingStart start;
   if (carried && !resume) start = fold_on_coarse_cut(scene, yaml, progress);
   scene.model = folding_model(scene.model, initial_state(scene.model), scene.folding->fraction,

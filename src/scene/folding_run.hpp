@@ -26,14 +26,19 @@ struct FoldingStart {
 using CoarseFoldProgress =
     std::function<void(std::size_t segments, int subdivisions, double fraction)>;
 
+/// Appended to the scene's text for the inputs hash of a folding run's checkpoint: it is not
+/// the scene's own run's (scene_inputs_hash).
+inline constexpr const char* kFoldingRunMark = "\n# finseg run --fold";
+
 /// Makes `scene` (read from `yaml`, its overrides in `scene.overrides`) its folding run: crease
 /// rest angles carried to their targets, the folding solver. With folding.coarse_subdivisions
 /// the fold is first solved on that cut of the pattern (`progress` told as it goes) and the
 /// fine run starts from its stowed poses in one load increment; `resume`: the run continues
 /// from its checkpoint, so the coarse fold is not solved (the settings are still the carried
-/// run's). Throws InputError without a folding: section, DivergenceError when the coarse fold
-/// fails.
-FoldingStart make_folding_run(Scene& scene, const std::string& yaml, bool resume,
+/// run's). `from_state`: `scene` starts from a state (--state), which a coarse cut cannot
+/// (InputError). Throws InputError without a folding: section, DivergenceError when the
+/// coarse fold fails.
+FoldingStart make_folding_run(Scene& scene, const std::string& yaml, bool resume, bool from_state,
                               const CoarseFoldProgress& progress = {});
 
 }  // namespace finseg
