@@ -122,9 +122,9 @@ class Assembler {
   /// Adds d(couple on body a)/d(rotation of body b), world frame, to the Jacobian (no-op
   /// when either body is fixed or no Jacobian is wanted).
   void add_rotation_block(int a, int b, const Mat3& dtau_dphi) {
-    Mat6 block = Mat6::Zero();
-    block.bottomRightCorner<3, 3>() = dtau_dphi;
-    add_pose_block(a, b, block);
+    const int ra = model_.dof_of_body[a], cb = model_.dof_of_body[b];
+    if (!jac_ || ra < 0 || cb < 0) return;
+    jac_->dq_blocks.add_corner(ra, cb, dtau_dphi);
   }
 
   /// Adds d(wrench on body a)/d(pose of body b) (forces and couples by translations and

@@ -55,6 +55,13 @@ void place_state(const Model& model, const State& start, double h, const Eigen::
 
 namespace {
 
+// The Jacobian's scratch, kept on the thread across solves: its storage and its block layout
+// (elements/block_matrix.hpp) then serve every step's evaluations, not only one solve's.
+ForceJacobian& scratch_jacobian() {
+  thread_local ForceJacobian jac;
+  return jac;
+}
+
 // The residual of one Newton solve, and on request its iteration matrix, at a point x.
 class Linearisation {
  public:
@@ -119,7 +126,7 @@ class Linearisation {
   State& state_;
   BodyForces& f_;
   SolverStats& stats_;
-  ForceJacobian jac_;
+  ForceJacobian& jac_ = scratch_jacobian();
 };
 
 // Backtracking on |r|: a full step that does not lower the residual is halved (at most
