@@ -219,5 +219,35 @@ TEST(ModifiedNewton, StepsWhoseNewtonFailsAreCountedApart) {
   EXPECT_LE(stats.newton_failures, stats.rejected_steps);
 }
 
+// Backward Euler starts Newton from the velocity the last step's change, continued, reaches.
+// Under a uniform acceleration that is the solution: one Newton iteration a step, but for the
+// steps after the start and after each output, where the extrapolation is dropped (so that a
+// run resumed there starts the same way) and Newton starts from v_n, one correction of h^2 g
+// (2.4e-3 m here) away, far beyond its tolerance (1e-3 of the step tolerance, 1e-5 m). The
+// velocity stays backward Euler's, g t, exact for uniform acceleration at any steps.
+TEST(ModifiedNewton, BackwardEulerStartsFromTheExtrapolatedVelocity) {
+  Model m;
+  m.bodies = {test::plate("falling", 1e-3, Vec3(0.01, 0.01, 1e-3), Vec3::Zero())};
+  m.gravity_W = Vec3(0, 0, -9.81);
+  m.sheet.length = 1;
+  m.finalize_dofs();
+  State state = initial_state(m);
+  SolverSettings s;
+  s.kind = SolverKind::Implicit;
+  s.t_end = 1;
+  s.output_interval = 0.125;
+  s.dt = s.dt_max = 1.0 / 64;  // 8 steps an output, binary fractions: no slivers
+  s.rtol = 1e-2;               // h/2 |dv| = 1.2e-3 m a step: every step is accepted
+  int outputs = 0;
+  const SolverStats stats =
+      run_solver(m, state, s, [&](const State&, const BodyForces&) { ++outputs; });
+  ASSERT_EQ(stats.status, "ok") << stats.message;
+  EXPECT_EQ(stats.rejected_steps, 0);
+  ASSERT_EQ(stats.steps, 64);
+  // Two iterations at the start and after each of the 7 outputs before the end, one else.
+  EXPECT_EQ(stats.newton_iterations, stats.steps + 8) << outputs << " outputs";
+  EXPECT_NEAR(state.v_W[0].z(), -9.81, 1e-12);
+}
+
 }  // namespace modified_newton_test
 }  // namespace finseg
