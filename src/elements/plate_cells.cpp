@@ -22,51 +22,95 @@ struct PlateSideNow {
   Vec3 g_F;  // the couple's F components: Jl^-T A^T m_k (on the outer body; -R_WF g on the inner)
 };
 
-PlateSideNow side_now(const Model& model, const State& s, const PlateCellSide& side) {
+// An element's relative rotation at the current state: the same for both cells it is a side
+// of, so each evaluation takes it (a logarithm and its Jacobian) once per element.
+struct ElementRotation {
+  Mat3 R_WF;
+  Vec3 theta_F;
+  Mat3 Jl_inv;
+};
+
+class ElementRotations {
+ public:
+  // Forgets what it took (a new state or model); keeps its storage.
+  void reset(std::size_t elements) {
+    done_.assign(elements, 0);
+    rotations_.resize(elements);
+  }
+  const ElementRotation& of(const Model& model, const State& s, int element) {
+    ElementRotation& r = rotations_[element];
+    if (done_[element]) return r;
+    const ElementDef& e = model.elements[element];
+    r.R_WF = s.R_WB[e.outer] * e.R_outer_F;
+    const Mat3 R_WE = s.R_WB[e.inner] * e.R_inner_E;
+    r.theta_F = so3_log<double>(r.R_WF.transpose() * R_WE);
+    r.Jl_inv = left_jacobian_inverse(r.theta_F);
+    done_[element] = 1;
+    return r;
+  }
+
+ private:
+  std::vector<char> done_;
+  std::vector<ElementRotation> rotations_;
+};
+
+PlateSideNow side_now(const Model& model, const State& s, const PlateCellSide& side,
+                      ElementRotations& rotations) {
   const ElementDef& e = model.elements[side.element];
+  const ElementRotation& r = rotations.of(model, s, side.element);
   PlateSideNow n;
   n.inner = e.inner;
   n.outer = e.outer;
-  n.R_WF = s.R_WB[e.outer] * e.R_outer_F;
-  const Mat3 R_WE = s.R_WB[e.inner] * e.R_inner_E;
-  n.theta_F = so3_log<double>(n.R_WF.transpose() * R_WE);
-  n.Jl_inv = left_jacobian_inverse(n.theta_F);
+  n.R_WF = r.R_WF;
+  n.theta_F = r.theta_F;
+  n.Jl_inv = r.Jl_inv;
   n.A = side.sign * side.R_BF.topRows<2>();
   return n;
 }
 
-// The exact Jacobian of the cell's couples over its local bodies' rotations (3 per body).
-// d theta_k = Jl^-1 R_WF^T (dphi_inner - dphi_outer); d g_k = H_k d theta_k + Jl^-T A^T dm_k
-// with H_k the turning of Jl^-T at fixed A^T m_k; and R_WF turns with the outer body.
-Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& now,
-                              const Eigen::VectorXd& m, CellBodies& cb) {
+using Rows3 = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+
+// A cell's dense work, kept between the cells of one evaluation (no allocation per cell where
+// they have the same number of sides; three fixed rows: small products unrolled).
+struct PlateWork {
+  Eigen::VectorXd theta, m;
+  Eigen::MatrixXd T, QT, J;
+  std::vector<Rows3> dtheta;
+  Rows3 dg, dtau;
+};
+
+// The exact Jacobian of the cell's couples over its local bodies' rotations (3 per body), in
+// w.J. d theta_k = Jl^-1 R_WF^T (dphi_inner - dphi_outer); d g_k = H_k d theta_k + Jl^-T A^T
+// dm_k with H_k the turning of Jl^-T at fixed A^T m_k; and R_WF turns with the outer body.
+void cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& now, CellBodies& cb,
+                   PlateWork& w) {
   const int n = static_cast<int>(now.size());
   for (const PlateSideNow& s : now) cb.local(s.inner), cb.local(s.outer);
   const int nr = 3 * cb.size();
-  std::vector<Eigen::MatrixXd> dtheta(n, Eigen::MatrixXd::Zero(3, nr));
-  Eigen::MatrixXd T(2 * n, nr);
+  w.dtheta.resize(n);
+  w.T.resize(2 * n, nr);
   for (int k = 0; k < n; ++k) {
     const PlateSideNow& s = now[k];
     const Mat3 U = s.Jl_inv * s.R_WF.transpose();
-    dtheta[k].middleCols<3>(3 * cb.local(s.inner)) += U;
-    dtheta[k].middleCols<3>(3 * cb.local(s.outer)) -= U;
-    T.middleRows<2>(2 * k) = s.A * dtheta[k];
+    w.dtheta[k].setZero(3, nr);
+    w.dtheta[k].middleCols<3>(3 * cb.local(s.inner)) += U;
+    w.dtheta[k].middleCols<3>(3 * cb.local(s.outer)) -= U;
+    w.T.middleRows<2>(2 * k).noalias() = s.A * w.dtheta[k];
   }
-  const Eigen::MatrixXd QT = cell.Q * T;
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nr, nr);
+  w.QT.noalias() = cell.Q * w.T;
+  w.J.setZero(nr, nr);
   for (int k = 0; k < n; ++k) {
     const PlateSideNow& s = now[k];
-    const Vec3 w = s.A.transpose() * m.segment<2>(2 * k);
-    const Eigen::MatrixXd dg =
-        left_jacobian_inverse_transpose_derivative(s.theta_F, w) * dtheta[k] +
-        s.Jl_inv.transpose() * s.A.transpose() * QT.middleRows<2>(2 * k);
-    Eigen::MatrixXd dtau = -s.R_WF * dg;  // the inner body's couple
+    const Vec3 m_k = s.A.transpose() * w.m.segment<2>(2 * k);
+    const Eigen::Matrix<double, 3, 2> lift = s.Jl_inv.transpose() * s.A.transpose();
+    w.dg.noalias() = left_jacobian_inverse_transpose_derivative(s.theta_F, m_k) * w.dtheta[k];
+    w.dg.noalias() += lift * w.QT.middleRows<2>(2 * k);
+    w.dtau.noalias() = -s.R_WF * w.dg;  // the inner body's couple
     const int i = 3 * cb.local(s.inner), o = 3 * cb.local(s.outer);
-    dtau.middleCols<3>(o) += hat<double>(Vec3(s.R_WF * s.g_F));
-    J.middleRows<3>(i) += dtau;
-    J.middleRows<3>(o) -= dtau;
+    w.dtau.middleCols<3>(o) += hat<double>(Vec3(s.R_WF * s.g_F));
+    w.J.middleRows<3>(i) += w.dtau;
+    w.J.middleRows<3>(o) -= w.dtau;
   }
-  return J;
 }
 
 }  // namespace
@@ -74,15 +118,20 @@ Eigen::MatrixXd cell_jacobian(const PlateCellDef& cell, const std::vector<PlateS
 void add_plate_cells(const Model& model, const State& state, Assembler& as) {
   std::vector<PlateSideNow> now;
   CellBodies cb;
+  PlateWork work;
+  thread_local ElementRotations rotations;  // its storage serves every evaluation
+  rotations.reset(model.elements.size());
   for (const PlateCellDef& cell : model.plate_cells) {
     const int n = static_cast<int>(cell.sides.size());
     now.clear();
-    Eigen::VectorXd theta(2 * n);
+    Eigen::VectorXd& theta = work.theta;
+    theta.resize(2 * n);
     for (int k = 0; k < n; ++k) {
-      now.push_back(side_now(model, state, cell.sides[k]));
+      now.push_back(side_now(model, state, cell.sides[k], rotations));
       theta.segment<2>(2 * k) = now[k].A * now[k].theta_F;
     }
-    const Eigen::VectorXd m = cell.Q * theta;
+    Eigen::VectorXd& m = work.m;
+    m.noalias() = cell.Q * theta;
     as.add_energy(0.5 * theta.dot(m));
     // dE = sum_k m_k . A_k Jl_k^-1 R_WF^T (dphi_inner - dphi_outer): the inner body takes
     // -R_WF Jl^-T A^T m_k, the outer the opposite.
@@ -95,10 +144,10 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
     }
     if (!as.want_jacobian()) continue;
     cb.clear();
-    const Eigen::MatrixXd J = cell_jacobian(cell, now, m, cb);
+    cell_jacobian(cell, now, cb, work);
     for (int a = 0; a < cb.size(); ++a) {
       for (int b = 0; b < cb.size(); ++b) {
-        as.add_rotation_block(cb.body(a), cb.body(b), J.block<3, 3>(3 * a, 3 * b));
+        as.add_rotation_block(cb.body(a), cb.body(b), work.J.block<3, 3>(3 * a, 3 * b));
       }
     }
   }
