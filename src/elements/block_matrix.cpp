@@ -35,30 +35,33 @@ void BlockMatrix::fold_listed() {
   }
 }
 
-void BlockMatrix::add(int row0, int col0, const Mat6& m) {
+int BlockMatrix::slot_to_add(int row0, int col0) {
   const int s = slot_of(row0, col0);
-  if (s < 0) {
-    keys_.emplace_back(row0, col0);
-    blocks_.push_back(m);
+  if (s < 0) return -1;
+  fold_listed();  // listed blocks first: sums keep the order the blocks came in
+  touched_[s] = 1;
+  return s;
+}
+
+void BlockMatrix::add(int row0, int col0, const Mat6& m) {
+  const int s = slot_to_add(row0, col0);
+  if (s >= 0) {
+    layout_sum_[s] += m;
     return;
   }
-  fold_listed();  // listed blocks first: sums keep the order the blocks came in
-  layout_sum_[s] += m;
-  touched_[s] = 1;
+  keys_.emplace_back(row0, col0);
+  blocks_.push_back(m);
 }
 
 void BlockMatrix::add_corner(int row0, int col0, const Mat3& m) {
-  const int s = slot_of(row0, col0);
-  if (s < 0) {
-    Mat6 block = Mat6::Zero();
-    block.bottomRightCorner<3, 3>() = m;
-    keys_.emplace_back(row0, col0);
-    blocks_.push_back(block);
+  const int s = slot_to_add(row0, col0);
+  if (s >= 0) {
+    layout_sum_[s].bottomRightCorner<3, 3>() += m;
     return;
   }
-  fold_listed();
-  layout_sum_[s].bottomRightCorner<3, 3>() += m;
-  touched_[s] = 1;
+  keys_.emplace_back(row0, col0);
+  blocks_.push_back(Mat6::Zero());
+  blocks_.back().bottomRightCorner<3, 3>() = m;
 }
 
 int BlockMatrix::append(int count) {

@@ -47,6 +47,7 @@ class BlockMatrix {
 
  private:
   int slot_of(int row0, int col0) const;  // the layout's slot of a block, or -1
+  int slot_to_add(int row0, int col0);    // slot_of, made ready to add to (or -1)
   void fold_listed();                     // listed blocks that fall on the layout summed there
   void sort_listed(int num_cols);         // fills order_ and start_ (unfolded blocks only)
   void learn_layout(int num_cols, const Eigen::SparseMatrix<double>& A);

@@ -10,24 +10,22 @@
 namespace finseg {
 namespace {
 
-// One side of a cell at the current state: the element's frame F (on its outer body), the
-// relative rotation theta = log(R_FE) (F components) and its inverse left Jacobian, and
-// A = sign (R_BF theta).head<2> / theta, which reads the side's measurement Theta = A theta.
-struct PlateSideNow {
-  int inner = -1, outer = -1;
-  Mat3 R_WF;
-  Vec3 theta_F;
-  Mat3 Jl_inv;
-  Eigen::Matrix<double, 2, 3> A;
-  Vec3 g_F;  // the couple's F components: Jl^-T A^T m_k (on the outer body; -R_WF g on the inner)
-};
-
-// An element's relative rotation at the current state: the same for both cells it is a side
-// of, so each evaluation takes it (a logarithm and its Jacobian) once per element.
+// An element's relative rotation at the current state: its frame F (on its outer body), the
+// relative rotation theta = log(R_FE) (F components) and its inverse left Jacobian. The same
+// for both cells the element is a side of, so each evaluation takes it once per element.
 struct ElementRotation {
   Mat3 R_WF;
   Vec3 theta_F;
   Mat3 Jl_inv;
+};
+
+// One side of a cell at the current state: its element's rotation `rot`, and
+// A = sign (R_BF theta).head<2> / theta, which reads the side's measurement Theta = A theta.
+struct PlateSideNow {
+  int inner = -1, outer = -1;
+  const ElementRotation* rot = nullptr;
+  Eigen::Matrix<double, 2, 3> A;
+  Vec3 g_F;  // the couple's F components: Jl^-T A^T m_k (on the outer body; -R_WF g on the inner)
 };
 
 class ElementRotations {
@@ -57,13 +55,10 @@ class ElementRotations {
 PlateSideNow side_now(const Model& model, const State& s, const PlateCellSide& side,
                       ElementRotations& rotations) {
   const ElementDef& e = model.elements[side.element];
-  const ElementRotation& r = rotations.of(model, s, side.element);
   PlateSideNow n;
   n.inner = e.inner;
   n.outer = e.outer;
-  n.R_WF = r.R_WF;
-  n.theta_F = r.theta_F;
-  n.Jl_inv = r.Jl_inv;
+  n.rot = &rotations.of(model, s, side.element);
   n.A = side.sign * side.R_BF.topRows<2>();
   return n;
 }
@@ -91,7 +86,7 @@ void cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& no
   w.T.resize(2 * n, nr);
   for (int k = 0; k < n; ++k) {
     const PlateSideNow& s = now[k];
-    const Mat3 U = s.Jl_inv * s.R_WF.transpose();
+    const Mat3 U = s.rot->Jl_inv * s.rot->R_WF.transpose();
     w.dtheta[k].setZero(3, nr);
     w.dtheta[k].middleCols<3>(3 * cb.local(s.inner)) += U;
     w.dtheta[k].middleCols<3>(3 * cb.local(s.outer)) -= U;
@@ -102,12 +97,12 @@ void cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& no
   for (int k = 0; k < n; ++k) {
     const PlateSideNow& s = now[k];
     const Vec3 m_k = s.A.transpose() * w.m.segment<2>(2 * k);
-    const Eigen::Matrix<double, 3, 2> lift = s.Jl_inv.transpose() * s.A.transpose();
-    w.dg.noalias() = left_jacobian_inverse_transpose_derivative(s.theta_F, m_k) * w.dtheta[k];
+    const Eigen::Matrix<double, 3, 2> lift = s.rot->Jl_inv.transpose() * s.A.transpose();
+    w.dg.noalias() = left_jacobian_inverse_transpose_derivative(s.rot->theta_F, m_k) * w.dtheta[k];
     w.dg.noalias() += lift * w.QT.middleRows<2>(2 * k);
-    w.dtau.noalias() = -s.R_WF * w.dg;  // the inner body's couple
+    w.dtau.noalias() = -s.rot->R_WF * w.dg;  // the inner body's couple
     const int i = 3 * cb.local(s.inner), o = 3 * cb.local(s.outer);
-    w.dtau.middleCols<3>(o) += hat<double>(Vec3(s.R_WF * s.g_F));
+    w.dtau.middleCols<3>(o) += hat<double>(Vec3(s.rot->R_WF * s.g_F));
     w.J.middleRows<3>(i) += w.dtau;
     w.J.middleRows<3>(o) -= w.dtau;
   }
@@ -128,7 +123,7 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
     theta.resize(2 * n);
     for (int k = 0; k < n; ++k) {
       now.push_back(side_now(model, state, cell.sides[k], rotations));
-      theta.segment<2>(2 * k) = now[k].A * now[k].theta_F;
+      theta.segment<2>(2 * k) = now[k].A * now[k].rot->theta_F;
     }
     Eigen::VectorXd& m = work.m;
     m.noalias() = cell.Q * theta;
@@ -137,8 +132,8 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
     // -R_WF Jl^-T A^T m_k, the outer the opposite.
     for (int k = 0; k < n; ++k) {
       PlateSideNow& s = now[k];
-      s.g_F = s.Jl_inv.transpose() * (s.A.transpose() * m.segment<2>(2 * k));
-      const Vec3 tau = -s.R_WF * s.g_F;
+      s.g_F = s.rot->Jl_inv.transpose() * (s.A.transpose() * m.segment<2>(2 * k));
+      const Vec3 tau = -s.rot->R_WF * s.g_F;
       as.add(s.inner, {Vec3::Zero(), tau});
       as.add(s.outer, {Vec3::Zero(), Vec3(-tau)});
     }
