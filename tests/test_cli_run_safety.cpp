@@ -83,8 +83,11 @@ int wait_exit_code(pid_t pid) {
 }
 
 // Interrupts a long run (minutes uninterrupted) as soon as it has recorded its first output.
-int interrupt_run(const TempDir& dir, int sig, const std::string& out) {
-  const pid_t pid = spawn_run(dir, {"c.yaml", "--out", out, "--checkpoint-every", "0"});
+int interrupt_run(const TempDir& dir, int sig, const std::string& out,
+                  const std::vector<std::string>& more = {}) {
+  std::vector<std::string> args{"c.yaml", "--out", out, "--checkpoint-every", "0"};
+  args.insert(args.end(), more.begin(), more.end());
+  const pid_t pid = spawn_run(dir, args);
   EXPECT_TRUE(wait_for(dir / (out + "/checkpoint.json")));
   kill(pid, sig);
   return wait_exit_code(pid);
@@ -207,6 +210,15 @@ TEST(CliRunSafety, ResumedGeneralizedAlphaRunEqualsUninterruptedRun) {
   expect_resume_matches("implicit", "generalized_alpha");
 }
 
+// The resumed static pull in "parts" ended as "whole": same status, end state and rows.
+void expect_same_pull(const TempDir& dir) {
+  EXPECT_EQ(summary(dir, "parts")["status"], "ok");
+  const auto a = final_state(dir, "whole"), b = final_state(dir, "parts");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << i;
+  EXPECT_EQ(slurp(dir / "whole/gauge.csv"), slurp(dir / "parts/gauge.csv"));
+}
+
 // A quasi-static pull (static solver, drive path with contact) continues where it stopped:
 // same equilibria, same rows, same end state.
 TEST(CliRunSafety, ResumedStaticPullEqualsUninterruptedPull) {
@@ -221,11 +233,42 @@ TEST(CliRunSafety, ResumedStaticPullEqualsUninterruptedPull) {
       << "the signal came after the run's end: nothing to resume";
   r = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(summary(dir, "parts")["status"], "ok");
-  const auto a = final_state(dir, "whole"), b = final_state(dir, "parts");
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << i;
-  EXPECT_EQ(slurp(dir / "whole/gauge.csv"), slurp(dir / "parts/gauge.csv"));
+  expect_same_pull(dir);
+}
+
+// A run from a state file starts its model there (drives from where their points are); its
+// checkpoint says so, and the run resumes from the same file to the same equilibria. Resumed
+// without it (the scene's drive start, the pull's first 30 mm undone) it was wrong, and is now
+// refused; so is a checkpoint of a run from the scene's start resumed with a state file.
+TEST(CliRunSafety, RunFromAStateFileResumesFromTheSameFile) {
+  TempDir dir;
+  auto r = run_finseg(dir, "gen zigzag --segments-per-panel 4 --out c.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "run c.yaml --out a --quiet --set zigzag.pull_travel=0.03");
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_finseg(dir, "run c.yaml --out whole --quiet --state a/checkpoint.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(interrupt_run(dir, SIGINT, "parts", {"--state", "a/checkpoint.json"}), 130)
+      << slurp(dir / "child_stderr.txt");
+  EXPECT_NE(slurp(dir / "child_stderr.txt").find("--resume --state a/checkpoint.json"),
+            std::string::npos);
+  ASSERT_LT(summary(dir, "parts")["outputs"].get<std::size_t>(),
+            summary(dir, "whole")["outputs"].get<std::size_t>())
+      << "the signal came after the run's end: nothing to resume";
+  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("parts/checkpoint.json: start_state: the run started from the state file "
+                       "a/checkpoint.json"),
+            std::string::npos)
+      << r.err;
+  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet --state a/checkpoint.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  expect_same_pull(dir);
+  r = run_finseg(dir, "run c.yaml --out a --resume --quiet --state whole/checkpoint.json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("start_state: the run started from the scene's initial state"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(CliRunSafety, ResumeRefusesACheckpointOfAnotherScene) {

@@ -126,12 +126,27 @@ void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStat
   }
 }
 
+// A run started from a state file has that state's configuration as its model's initial one
+// (drives' start points, crease openings: start_fresh_from), so the run resumed from its
+// checkpoint must start from the same file; the scene hash then tells whether it changed.
+void check_same_start(const std::string& path, const StateSnapshot& snap,
+                      const std::string& state_file) {
+  if (!snap.start_state.empty() && state_file.empty()) {
+    throw InputError(path, "start_state",
+                     fmt::format("the run started from the state file {}: continue it with "
+                                 "--resume --state {}",
+                                 snap.start_state, snap.start_state));
+  }
+  if (snap.start_state.empty() && !state_file.empty()) {
+    throw InputError(path, "start_state",
+                     "the run started from the scene's initial state: resume it without --state");
+  }
+}
+
 // The state the run starts from: the scene's initial state, DIR's checkpoint (--resume,
 // which also restores what was recorded) or any state file (--state).
 State starting_state(const RunOptions& o, const Scene& scene, const std::string& hash,
                      RunRecorder& rec) {
-  if (o.resume && !o.state_file.empty())
-    throw InputError("<cli>", "--resume", "continues DIR's own checkpoint: leave out --state");
   if (o.resume) {
     if (scene.solver.kind == SolverKind::Static && !has_drive_path(scene.model)) {
       throw InputError("<cli>", "--resume",
@@ -142,14 +157,22 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
     const std::string path = (fs::path(o.out) / kCheckpointFile).string();
     if (!fs::exists(path)) throw InputError(path, "--resume", "no checkpoint to resume from");
     StateSnapshot snap = read_checkpoint(path, scene.model, rec);
+    check_same_start(path, snap, o.state_file);
     if (snap.scene_hash != hash) {
       throw InputError(path, "scene_hash",
-                       "the checkpoint was made from another scene (or the scene file or its "
-                       "crease data changed since): run without --resume");
+                       "the checkpoint was made from another scene or start state (or the scene "
+                       "file, its crease data or the --state file changed since): run without "
+                       "--resume");
     }
     return snap.state;
   }
   return initial_state(scene.model);
+}
+
+// What the start state file adds to the scene's hash: its bytes ("" without one).
+std::string start_state_mark(const std::string& state_file) {
+  if (state_file.empty()) return "";
+  return std::string("\n# finseg run --state\n") + read_whole_file(state_file);
 }
 
 // A run from a state file is a fresh run whose initial configuration is that state's
@@ -173,7 +196,7 @@ class Checkpointer {
   }
   void write(const State& s, const RunRecorder& rec) {
     try {
-      write_checkpoint(o_.out, scene_.model, {s, hash_}, rec);
+      write_checkpoint(o_.out, scene_.model, {s, hash_, o_.state_file}, rec);
       write_manifest(o_.out, {kCheckpointFile});
     } catch (const std::exception& e) {
       if (!warned_) fmt::print(stderr, "finseg: warning: checkpoint not written: {}\n", e.what());
@@ -197,7 +220,8 @@ class Checkpointer {
              "state there in {}\n",
              sig == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, now), rec.outputs(), where(rec),
              o.out, kCheckpointFile);
-  fmt::print(stderr, "finseg: continue with: finseg run {} --out {} --resume\n", o.scene, o.out);
+  fmt::print(stderr, "finseg: continue with: finseg run {} --out {} --resume{}\n", o.scene, o.out,
+             o.state_file.empty() ? "" : " --state " + o.state_file);
   throw ExitStatus{sig == SIGTERM ? 143 : 130};
 }
 
@@ -240,11 +264,14 @@ void run_scene(const RunOptions& o) {
   // The checkpoint's hash covers the crease data and the --set changes too: a resume after a
   // table or an override changed is refused; a folding run's checkpoint is not its scene's.
   const std::string yaml = read_whole_file(o.scene);
-  const std::string hash = scene_inputs_hash(yaml + (o.fold ? kFoldingRunMark : ""), scene);
-  // From a state file first, so that a folding run folds on from there.
+  // ... and the start state's: the model starts from it.
+  const std::string hash = scene_inputs_hash(
+      yaml + (o.fold ? kFoldingRunMark : "") + start_state_mark(o.state_file), scene);
+  // From a state file first, so that a folding run folds on from there; a resumed run's model
+  // starts from it as the interrupted run's did.
   std::optional<State> from_file;
   std::vector<RunStage> stages;  // solves made before this run (a coarse fold)
-  if (!o.state_file.empty() && !o.resume) from_file = start_scene_from_state_file(o, scene);
+  if (!o.state_file.empty()) from_file = start_scene_from_state_file(o, scene);
   if (o.fold) {
     FoldingStart folding = fold_with_progress(scene, yaml, o, from_file.has_value());
     if (folding.state) from_file = std::move(folding.state);
@@ -252,7 +279,7 @@ void run_scene(const RunOptions& o) {
   }
   check_output_folder(o.out, scene);
   RunRecorder rec(scene.model, scene.solver, recorder_options(scene));
-  State state = from_file ? *from_file : starting_state(o, scene, hash, rec);
+  State state = from_file && !o.resume ? *from_file : starting_state(o, scene, hash, rec);
   // Resumed: the same step sizes as the interrupted run (explicit: its fixed step; implicit:
   // the step it would have tried next). summary.json keeps the scene's settings.
   SolverSettings settings = scene.solver;
@@ -320,8 +347,8 @@ void register_run(CLI::App& app) {
   run->add_option("--out", o->out, "output folder (created if needed)")->required();
   run->add_flag("--quiet", o->quiet, "no progress display and no result lines");
   run->add_flag("--resume", o->resume,
-                "continue the run whose checkpoint is in --out (same scene; dynamic solvers and "
-                "static drive paths)");
+                "continue the run whose checkpoint is in --out (same scene, and the same --state "
+                "file if it started from one; dynamic solvers and static drive paths)");
   run->add_option("--state", o->state_file,
                   "start from this state file instead of the scene's initial state "
                   "(docs/state-file.md)");

@@ -281,32 +281,34 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
     elements.push_back(
         {{"fold_angle_rad", h.fold_angle}, {"openings", h.openings}, {"opened", h.opened}});
   }
-  return {{"format", kFormat},
-          {"version", kVersion},
-          {"scene_hash", snap.scene_hash},
-          {"model",
-           {{"bodies", model.bodies.size()},
-            {"elements", model.elements.size()},
-            {"drives", model.drives.size()},
-            {"chambers", model.chambers.size()}}},
-          {"t", s.t},
-          {"load_scale", s.load_scale},
-          {"drive_s_m", s.drive_s},
-          {"bodies", bodies},
-          {"elements", elements},
-          {"contact", contact_json(s.contact)},
-          {"chambers", chambers_json(model, s)},
-          {"solver",
-           {{"t", s.solver.t},
-            {"dt_s", s.solver.dt},
-            {"next_output", s.solver.next_output},
-            {"t_start", s.solver.t_start},
-            {"steps", s.solver.steps},
-            {"f_W_N", vecs_json(s.solver.f_W)},
-            {"tau_W_N_m", vecs_json(s.solver.tau_W)},
-            {"vdot", s.solver.vdot},
-            {"accel", s.solver.accel},
-            {"h_prev_s", s.solver.h_prev}}}};
+  json j = {{"format", kFormat},
+            {"version", kVersion},
+            {"scene_hash", snap.scene_hash},
+            {"model",
+             {{"bodies", model.bodies.size()},
+              {"elements", model.elements.size()},
+              {"drives", model.drives.size()},
+              {"chambers", model.chambers.size()}}},
+            {"t", s.t},
+            {"load_scale", s.load_scale},
+            {"drive_s_m", s.drive_s},
+            {"bodies", bodies},
+            {"elements", elements},
+            {"contact", contact_json(s.contact)},
+            {"chambers", chambers_json(model, s)},
+            {"solver",
+             {{"t", s.solver.t},
+              {"dt_s", s.solver.dt},
+              {"next_output", s.solver.next_output},
+              {"t_start", s.solver.t_start},
+              {"steps", s.solver.steps},
+              {"f_W_N", vecs_json(s.solver.f_W)},
+              {"tau_W_N_m", vecs_json(s.solver.tau_W)},
+              {"vdot", s.solver.vdot},
+              {"accel", s.solver.accel},
+              {"h_prev_s", s.solver.h_prev}}}};
+  if (!snap.start_state.empty()) j["start_state"] = snap.start_state;
+  return j;
 }
 
 StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,
@@ -334,6 +336,10 @@ StateSnapshot parse_state_json(const nlohmann::json& j, const Model& model,
   const json& hash = in.key(j, "scene_hash", "");
   if (!hash.is_string()) in.fail("scene_hash", "expected a string");
   snap.scene_hash = hash.get<std::string>();
+  if (j.contains("start_state")) {  // optional: absent, the scene's initial state
+    if (!j["start_state"].is_string()) in.fail("start_state", "expected a file name");
+    snap.start_state = j["start_state"].get<std::string>();
+  }
   State& s = snap.state;
   s.t = in.number(in.key(j, "t", ""), "t");
   s.load_scale = in.number(in.key(j, "load_scale", ""), "load_scale");

@@ -16,6 +16,9 @@ namespace finseg {
 struct StateSnapshot {
   State state;
   std::string scene_hash;  ///< scene_hash() of the scene file's text ("" if not known)
+  /// The state file a run started from (`--state`, as given; "" for the scene's initial
+  /// state): a checkpoint's model depends on it, so `--resume` needs it again.
+  std::string start_state = {};
 };
 
 /// Fingerprint of a scene file's text (64-bit FNV-1a, as 16 hex digits).
