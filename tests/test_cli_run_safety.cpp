@@ -21,6 +21,7 @@
 
 #include "cli_test_util.hpp"
 #include "test_paths.hpp"
+#include "writers/provenance.hpp"
 
 namespace finseg {
 namespace cli_run_safety_test {
@@ -248,6 +249,9 @@ TEST(CliRunSafety, RunFromAStateFileResumesFromTheSameFile) {
   ASSERT_EQ(r.code, 0) << r.err;
   r = run_finseg(dir, "run c.yaml --out whole --quiet --state a/checkpoint.json");
   ASSERT_EQ(r.code, 0) << r.err;
+  const auto from = summary(dir, "whole")["provenance"]["start_state"];
+  EXPECT_EQ(from["file"], "a/checkpoint.json");
+  EXPECT_EQ(from["sha256"], sha256_file(dir / "a/checkpoint.json"));
   ASSERT_EQ(interrupt_run(dir, SIGINT, "parts", {"--state", "a/checkpoint.json"}), 130)
       << slurp(dir / "child_stderr.txt");
   EXPECT_NE(slurp(dir / "child_stderr.txt").find("--resume --state a/checkpoint.json"),

@@ -160,9 +160,9 @@ State starting_state(const RunOptions& o, const Scene& scene, const std::string&
     check_same_start(path, snap, o.state_file);
     if (snap.scene_hash != hash) {
       throw InputError(path, "scene_hash",
-                       "the checkpoint was made from another scene or start state (or the scene "
-                       "file, its crease data or the --state file changed since): run without "
-                       "--resume");
+                       "the checkpoint was made from another scene (or the scene file or its "
+                       "crease data changed since, or the --state file it started from): run "
+                       "without --resume");
     }
     return snap.state;
   }
@@ -179,6 +179,7 @@ std::string start_state_mark(const std::string& state_file) {
 // (docs/state-file.md): its poses, crease history and contact anchors, drives starting from
 // where their points are.
 State start_scene_from_state_file(const RunOptions& o, Scene& scene) {
+  scene.start_state = o.state_file;
   return start_fresh_from(scene, read_state_file(o.state_file, scene.model).state);
 }
 

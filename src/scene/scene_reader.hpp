@@ -43,6 +43,7 @@ struct Scene {
   std::optional<FoldingSpec> folding;
   SolverSettings folding_solver;
   std::vector<Override> overrides;  ///< `--set` changes applied on top of the file
+  std::string start_state;          ///< state file the run starts from (`--state`), if any
 };
 
 /// Reads and validates a scene file (read once), with `overrides` (scene/overrides.hpp) set in

@@ -80,12 +80,14 @@ std::string scene_inputs_hash(const std::string& scene_text, const Scene& scene)
 nlohmann::json provenance_json(const Scene& scene) {
   nlohmann::json data = nlohmann::json::array();
   for (const std::string& f : scene_data_files(scene)) data.push_back(hashed(f));
-  return {{"finseg_version", version()},
-          {"git_revision", git_revision()},
-          {"date_utc", utc_now_iso8601()},
-          {"scene", hashed(scene.file)},
-          {"data_files", data},
-          {"hash", "SHA-256 of the file's bytes (OpenSSL libcrypto)"}};
+  nlohmann::json j = {{"finseg_version", version()},
+                      {"git_revision", git_revision()},
+                      {"date_utc", utc_now_iso8601()},
+                      {"scene", hashed(scene.file)},
+                      {"data_files", data},
+                      {"hash", "SHA-256 of the file's bytes (OpenSSL libcrypto)"}};
+  if (!scene.start_state.empty()) j["start_state"] = hashed(scene.start_state);
+  return j;
 }
 
 }  // namespace finseg
