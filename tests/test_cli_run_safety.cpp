@@ -275,6 +275,46 @@ TEST(CliRunSafety, RunFromAStateFileResumesFromTheSameFile) {
       << r.err;
 }
 
+// The frames of a run with VTK on are kept in a file beside the checkpoint, which grows by the
+// frames since the last checkpoint, not in checkpoint.json; a checkpoint written before (frames
+// in run.frames) still resumes.
+TEST(CliRunSafety, CheckpointKeepsItsFramesInAFileBeside) {
+  TempDir dir;
+  write_cantilever(dir, "implicit", 0.02);
+  replace_line(dir / "c.yaml", "vtk: false", "vtk: true");
+  ASSERT_EQ(interrupt_run(dir, SIGINT, "parts"), 130) << slurp(dir / "child_stderr.txt");
+  auto j = nlohmann::json::parse(slurp(dir / "parts/checkpoint.json"));
+  const std::size_t count = j["run"]["frames_file"]["count"];
+  EXPECT_EQ(count, summary(dir, "parts")["outputs"].get<std::size_t>());
+  EXPECT_FALSE(j["run"].contains("frames"));
+  EXPECT_EQ(fs::file_size(dir / "parts/checkpoint.json.frames"),
+            j["run"]["frames_file"]["bytes"].get<std::uintmax_t>());
+  EXPECT_NE(slurp(dir / "parts/manifest.json").find("\"checkpoint.json.frames\""),
+            std::string::npos);
+  // As written before the frame file: each frame in the JSON (here every one at the
+  // checkpoint's poses).
+  nlohmann::json frames = nlohmann::json::array();
+  nlohmann::json p = nlohmann::json::array(), r = nlohmann::json::array();
+  for (const auto& b : j["bodies"]) {
+    p.push_back(b["p_W_m"]);
+    r.push_back(b["R_WB"]);
+  }
+  for (std::size_t k = 0; k < count; ++k)
+    frames.push_back({{"t", 0.001 * k},
+                      {"R_WB", r},
+                      {"p_W_m", p},
+                      {"contact_points_W_m", nlohmann::json::array()}});
+  j["run"].erase("frames_file");
+  j["run"]["frames"] = frames;
+  spit(dir / "parts/checkpoint.json", j.dump());
+  fs::remove(dir / "parts/checkpoint.json.frames");
+  const auto res = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
+  ASSERT_EQ(res.code, 0) << res.err;
+  EXPECT_EQ(summary(dir, "parts")["status"], "ok");
+  EXPECT_TRUE(fs::exists(dir / "parts/vtk/frames_00020.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "parts/vtk/frames_00021.vtu"));
+}
+
 TEST(CliRunSafety, ResumeRefusesACheckpointOfAnotherScene) {
   TempDir dir;
   write_cantilever(dir, "explicit", 0.01);

@@ -25,6 +25,7 @@
 #include "solvers/stop_request.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/checkpoint.hpp"
+#include "writers/frame_file.hpp"
 #include "writers/output_folder.hpp"
 #include "writers/provenance.hpp"
 #include "writers/run_outputs.hpp"
@@ -287,8 +288,9 @@ void run_scene(const RunOptions& o) {
   if (o.resume && state.solver.t == state.t && state.solver.dt > 0) settings.dt = state.solver.dt;
   // Only this run's files in DIR from now on; a summary.json of a run from before manifests
   // must not make this one look complete either.
-  remove_previous_run(
-      o.out, o.resume ? std::vector<std::string>{kCheckpointFile} : std::vector<std::string>{});
+  remove_previous_run(o.out, o.resume
+                                 ? std::vector<std::string>{kCheckpointFile, kCheckpointFramesFile}
+                                 : std::vector<std::string>{});
   fs::remove(fs::path(o.out) / "summary.json");
   clear_stop_request();
   install_stop_handlers();

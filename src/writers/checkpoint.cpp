@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "writers/atomic_write.hpp"
+#include "writers/frame_file.hpp"
 
 namespace finseg {
 namespace {
@@ -66,55 +67,12 @@ PairSample pair_from(const json& v, const std::string& file, const std::string& 
   return s;
 }
 
-json vec3s_json(const std::vector<Vec3>& v) {
-  json out = json::array();
-  for (const Vec3& x : v) out.push_back({x.x(), x.y(), x.z()});
-  return out;
-}
-
 std::vector<Vec3> vec3s_from(const json& v, const std::string& file, const std::string& field) {
   if (!v.is_array()) throw InputError(file, field, "expected an array");
   std::vector<Vec3> out;
   for (std::size_t i = 0; i < v.size(); ++i)
     out.push_back(vec3(v[i], file, fmt::format("{}[{}]", field, i)));
   return out;
-}
-
-// Per-segment loads and per-contact-point arrays, by their names in the checkpoint.
-// FrameT is Frame or const Frame.
-template <class FrameT, class Visit>
-void frame_arrays(FrameT& f, Visit&& visit) {
-  auto& s = f.segments;
-  visit("segment_element_force_N", s.element_force);
-  visit("segment_element_moment_Nm", s.element_moment);
-  visit("segment_crease_opening_rad", s.crease_opening);
-  visit("segment_crease_moment_Nm", s.crease_moment);
-  visit("segment_contact_normal_N", s.contact_normal);
-  visit("segment_contact_friction_N", s.contact_friction);
-  visit("contact_normal_N", f.contact_normal);
-  visit("contact_penetration_m", f.contact_penetration);
-  visit("contact_friction_N", f.contact_friction);
-}
-
-template <class FrameT, class Visit>
-void frame_vectors(FrameT& f, Visit&& visit) {
-  visit("p_W_m", f.p_W);
-  visit("contact_points_W_m", f.contact_points_W);
-  visit("v_W_m_s", f.v_W);
-  visit("w_W_rad_s", f.w_W);
-  visit("segment_force_W_N", f.segments.force_W);
-  visit("segment_moment_W_Nm", f.segments.moment_W);
-}
-
-json frame_json(const Frame& f) {
-  json j = {{"t", f.t}};
-  json r = json::array();
-  for (const Mat3& m : f.R_WB)
-    r.push_back({m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)});
-  j["R_WB"] = r;
-  frame_vectors(f, [&](const char* key, const std::vector<Vec3>& v) { j[key] = vec3s_json(v); });
-  frame_arrays(f, [&](const char* key, const std::vector<double>& v) { j[key] = v; });
-  return j;
 }
 
 // Arrays added after the first checkpoints may be absent: they are then left empty.
@@ -130,10 +88,10 @@ Frame frame_from(const json& v, const std::string& file, const std::string& fiel
   f.p_W = vec3s_from(member(v, "p_W_m", file, field), file, field + ".p_W_m");
   f.contact_points_W =
       vec3s_from(member(v, "contact_points_W_m", file, field), file, field + ".contact_points_W_m");
-  frame_vectors(f, [&](const char* key, std::vector<Vec3>& out) {
+  visit_frame_vectors(f, [&](const char* key, std::vector<Vec3>& out) {
     if (v.contains(key)) out = vec3s_from(v[key], file, field + "." + key);
   });
-  frame_arrays(f, [&](const char* key, std::vector<double>& out) {
+  visit_frame_arrays(f, [&](const char* key, std::vector<double>& out) {
     if (v.contains(key)) out = numbers(v[key], file, field + "." + key);
   });
   return f;
@@ -146,19 +104,38 @@ json recorded_json(const RunRecorder& rec) {
     for (const PairSample& s : t.pair_rows) pairs.push_back(pair_json(s));
     tables.push_back({{"name", t.name}, {"rows", t.rows}, {"pair_rows", pairs}});
   }
-  json frames = json::array();
-  for (const Frame& f : rec.frames()) frames.push_back(frame_json(f));
   json samples = json::array();
   for (const PhaseSample& p : rec.phase_samples())
     samples.push_back({p.displacement, p.active_contacts, p.bend});
   return {{"outputs", rec.outputs()},
           {"last_abscissa", rec.last_abscissa()},
           {"tables", tables},
-          {"frames", frames},
           {"phase_samples", samples}};
 }
 
-void restore_recorded(const json& j, const std::string& file, RunRecorder& rec) {
+// The frames of a checkpoint: in its frame file, or (checkpoints written before 2026-11-29) in
+// `run.frames`.
+std::vector<Frame> restore_frames(const json& j, const std::string& file,
+                                  const std::string& run_hash) {
+  std::vector<Frame> frames;
+  if (j.contains("frames_file")) {
+    const json& ff = j["frames_file"];
+    const json& count = member(ff, "count", file, "run.frames_file");
+    const json& bytes = member(ff, "bytes", file, "run.frames_file");
+    if (!count.is_number_unsigned() || !bytes.is_number_unsigned())
+      throw InputError(file, "run.frames_file", "expected counts");
+    const std::string path =
+        (std::filesystem::path(file).parent_path() / kCheckpointFramesFile).string();
+    return read_frame_file(path, run_hash, count.get<std::size_t>(), bytes.get<std::uint64_t>());
+  }
+  const json& jf = member(j, "frames", file, "run");
+  for (std::size_t i = 0; i < jf.size(); ++i)
+    frames.push_back(frame_from(jf[i], file, fmt::format("run.frames[{}]", i)));
+  return frames;
+}
+
+void restore_recorded(const json& j, const std::string& file, const std::string& run_hash,
+                      RunRecorder& rec) {
   const std::string run = "run";
   std::vector<ProbeTable> tables = rec.tables();
   const json& jt = member(j, "tables", file, run);
@@ -180,10 +157,7 @@ void restore_recorded(const json& j, const std::string& file, RunRecorder& rec) 
       tables[k].pair_rows.push_back(
           pair_from(pairs[r], file, fmt::format("{}.pair_rows[{}]", f, r)));
   }
-  std::vector<Frame> frames;
-  const json& jf = member(j, "frames", file, run);
-  for (std::size_t i = 0; i < jf.size(); ++i)
-    frames.push_back(frame_from(jf[i], file, fmt::format("run.frames[{}]", i)));
+  std::vector<Frame> frames = restore_frames(j, file, run_hash);
   std::vector<PhaseSample> samples;
   const json& js = member(j, "phase_samples", file, run);
   for (std::size_t i = 0; i < js.size(); ++i) {
@@ -205,6 +179,16 @@ void write_checkpoint(const std::string& dir, const Model& model, const StateSna
                       const RunRecorder& rec) {
   json j = state_json(model, snapshot);
   j["run"] = recorded_json(rec);
+  // The frames go to their own file first, so that the checkpoint never names frames that are
+  // not there.
+  if (rec.frames().empty()) {
+    j["run"]["frames"] = json::array();
+  } else {
+    const std::string frames = (std::filesystem::path(dir) / kCheckpointFramesFile).string();
+    j["run"]["frames_file"] = {
+        {"count", rec.frames().size()},
+        {"bytes", sync_frame_file(frames, snapshot.scene_hash, rec.frames())}};
+  }
   write_file_atomically((std::filesystem::path(dir) / kCheckpointFile).string(),
                         j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
@@ -218,7 +202,7 @@ StateSnapshot read_checkpoint(const std::string& path, const Model& model, RunRe
   }
   StateSnapshot snap = parse_state_json(j, model, path);
   if (!j.contains("run")) throw InputError(path, "run", "missing (a state file, not a checkpoint)");
-  restore_recorded(j["run"], path, rec);
+  restore_recorded(j["run"], path, snap.scene_hash, rec);
   return snap;
 }
 

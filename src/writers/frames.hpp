@@ -34,6 +34,33 @@ struct Frame {
   std::vector<double> contact_normal, contact_penetration, contact_friction;
 };
 
+/// Calls visit(name, std::vector<double>&) for each per-segment and per-contact-point array
+/// of a frame, by its name in checkpoints (FrameT: Frame or const Frame).
+template <class FrameT, class Visit>
+void visit_frame_arrays(FrameT& f, Visit&& visit) {
+  auto& s = f.segments;
+  visit("segment_element_force_N", s.element_force);
+  visit("segment_element_moment_Nm", s.element_moment);
+  visit("segment_crease_opening_rad", s.crease_opening);
+  visit("segment_crease_moment_Nm", s.crease_moment);
+  visit("segment_contact_normal_N", s.contact_normal);
+  visit("segment_contact_friction_N", s.contact_friction);
+  visit("contact_normal_N", f.contact_normal);
+  visit("contact_penetration_m", f.contact_penetration);
+  visit("contact_friction_N", f.contact_friction);
+}
+
+/// Calls visit(name, std::vector<Vec3>&) for each vector field of a frame (as above).
+template <class FrameT, class Visit>
+void visit_frame_vectors(FrameT& f, Visit&& visit) {
+  visit("p_W_m", f.p_W);
+  visit("contact_points_W_m", f.contact_points_W);
+  visit("v_W_m_s", f.v_W);
+  visit("w_W_rad_s", f.w_W);
+  visit("segment_force_W_N", f.segments.force_W);
+  visit("segment_moment_W_Nm", f.segments.moment_W);
+}
+
 /// An x-y curve shown beside an animation (e.g. gauge force against pull displacement).
 struct Curve {
   std::string x_label, y_label;  ///< with units, e.g. "pull displacement [mm]"
