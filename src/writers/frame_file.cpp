@@ -33,7 +33,7 @@ void put_u64(std::string& out, std::uint64_t v) {
 }
 
 void put_doubles(std::string& out, const double* x, std::size_t n) {
-  out.append(reinterpret_cast<const char*>(x), n * sizeof(double));
+  if (n > 0) out.append(reinterpret_cast<const char*>(x), n * sizeof(double));
 }
 
 std::string record(const Frame& f) {
@@ -63,6 +63,7 @@ class RecordReader {
  public:
   RecordReader(const char* p, std::uint64_t size) : p_(p), left_(size) {}
   bool doubles(double* x, std::uint64_t n) {
+    if (n == 0) return true;  // (x may be null: an empty vector's data)
     if (n > left_ / sizeof(double)) return false;
     std::memcpy(x, p_, n * sizeof(double));
     p_ += n * sizeof(double);
