@@ -252,20 +252,26 @@ TEST(CliRunSafety, RunFromAStateFileResumesFromTheSameFile) {
   const auto from = summary(dir, "whole")["provenance"]["start_state"];
   EXPECT_EQ(from["file"], "a/checkpoint.json");
   EXPECT_EQ(from["sha256"], sha256_file(dir / "a/checkpoint.json"));
-  ASSERT_EQ(interrupt_run(dir, SIGINT, "parts", {"--state", "a/checkpoint.json"}), 130)
+  // (--set with the scene's own value: the same run, but its hash asks for it again)
+  const std::string same = "solver.tolerance=1e-9";
+  ASSERT_EQ(interrupt_run(dir, SIGINT, "parts", {"--set", same, "--state", "a/checkpoint.json"}),
+            130)
       << slurp(dir / "child_stderr.txt");
-  EXPECT_NE(slurp(dir / "child_stderr.txt").find("--resume --state a/checkpoint.json"),
+  EXPECT_NE(slurp(dir / "child_stderr.txt")
+                .find("continue with: finseg run c.yaml --out parts --set " + same +
+                      " --state a/checkpoint.json --resume"),
             std::string::npos);
   ASSERT_LT(summary(dir, "parts")["outputs"].get<std::size_t>(),
             summary(dir, "whole")["outputs"].get<std::size_t>())
       << "the signal came after the run's end: nothing to resume";
-  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet");
+  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet --set " + same);
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("parts/checkpoint.json: start_state: the run started from the state file "
                        "a/checkpoint.json"),
             std::string::npos)
       << r.err;
-  r = run_finseg(dir, "run c.yaml --out parts --resume --quiet --state a/checkpoint.json");
+  r = run_finseg(dir,
+                 "run c.yaml --out parts --resume --quiet --state a/checkpoint.json --set " + same);
   ASSERT_EQ(r.code, 0) << r.err;
   expect_same_pull(dir);
   r = run_finseg(dir, "run c.yaml --out a --resume --quiet --state whole/checkpoint.json");

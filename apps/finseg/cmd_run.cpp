@@ -215,6 +215,16 @@ class Checkpointer {
   bool warned_ = false;
 };
 
+// The command that continues an interrupted run: its scene, folder, --fold, --set changes and
+// start state, which its checkpoint's hash covers, and --resume.
+std::string continue_command(const RunOptions& o) {
+  std::string c = fmt::format("finseg run {} --out {}", o.scene, o.out);
+  if (o.fold) c += " --fold";
+  for (const std::string& s : o.set) c += " --set " + s;
+  if (!o.state_file.empty()) c += " --state " + o.state_file;
+  return c + " --resume";
+}
+
 [[noreturn]] void stop_interrupted(const RunOptions& o, const RunRecorder& rec, const State& now) {
   const int sig = g_signal;
   fmt::print(stderr,
@@ -222,8 +232,7 @@ class Checkpointer {
              "state there in {}\n",
              sig == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, now), rec.outputs(), where(rec),
              o.out, kCheckpointFile);
-  fmt::print(stderr, "finseg: continue with: finseg run {} --out {} --resume{}\n", o.scene, o.out,
-             o.state_file.empty() ? "" : " --state " + o.state_file);
+  fmt::print(stderr, "finseg: continue with: {}\n", continue_command(o));
   throw ExitStatus{sig == SIGTERM ? 143 : 130};
 }
 
@@ -317,8 +326,9 @@ void run_scene(const RunOptions& o) {
   // The final state, or where the run stopped (maybe between outputs; docs/state-file.md).
   if (stats.status == "ok" || interrupted) checkpoints.write(state, rec);
   if (interrupted) {
-    stats.message = fmt::format("interrupted by {} at {}; continue with --resume",
-                                g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, state));
+    stats.message = fmt::format("interrupted by {} at {}; continue with: {}",
+                                g_signal == SIGTERM ? "SIGTERM" : "SIGINT", where(rec, state),
+                                continue_command(o));
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const std::size_t frames = rec.frames().size();
