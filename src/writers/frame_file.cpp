@@ -70,12 +70,13 @@ class RecordReader {
     left_ -= n * sizeof(double);
     return true;
   }
-  bool count(std::uint64_t& n) {
+  // A count of entries of `each` doubles, which must fit in what is left of the record.
+  bool count(std::uint64_t& n, std::uint64_t each) {
     if (left_ < sizeof(n)) return false;
     std::memcpy(&n, p_, sizeof(n));
     p_ += sizeof(n);
     left_ -= sizeof(n);
-    return true;
+    return n <= left_ / (each * sizeof(double));
   }
   bool done() const { return left_ == 0; }
 
@@ -87,7 +88,7 @@ class RecordReader {
 bool parse_record(const char* p, std::uint64_t size, Frame& f) {
   RecordReader in(p, size);
   std::uint64_t n = 0;
-  if (!in.doubles(&f.t, 1) || !in.count(n) || n > size / 72) return false;
+  if (!in.doubles(&f.t, 1) || !in.count(n, 9)) return false;
   f.R_WB.resize(n);
   for (Mat3& m : f.R_WB) {
     Eigen::Matrix<double, 3, 3, Eigen::RowMajor> r;
@@ -96,13 +97,13 @@ bool parse_record(const char* p, std::uint64_t size, Frame& f) {
   }
   bool ok = true;
   visit_frame_vectors(f, [&](const char*, std::vector<Vec3>& v) {
-    ok = ok && in.count(n) && n <= size / 24;
+    ok = ok && in.count(n, 3);
     if (!ok) return;
     v.resize(n);
     for (Vec3& x : v) ok = ok && in.doubles(x.data(), 3);
   });
   visit_frame_arrays(f, [&](const char*, std::vector<double>& v) {
-    ok = ok && in.count(n) && n <= size / 8;
+    ok = ok && in.count(n, 1);
     if (!ok) return;
     v.resize(n);
     ok = in.doubles(v.data(), n);
