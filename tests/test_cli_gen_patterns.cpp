@@ -159,5 +159,34 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   EXPECT_EQ(r.code, 0) << r.err;
 }
 
+// Stowed by reflection (`--reflected F`, docs/folding.md): the pattern's folded form is the
+// stowed wall and reads back (planar faces, the seam closed); the run starts with contact on
+// and no point touching, the pull along the axis; bad combinations are refused.
+TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreRefused) {
+  TempDir dir;
+  auto r = run_finseg(dir,
+                      "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                      "--base open --reflected 0.5 --out re.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(test::slurp(dir / "re.yaml").find("direction: [0, 0, 1]"), std::string::npos);
+  r = run_finseg(dir, "inspect re.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  r = run_finseg(dir,
+                 "run re.yaml --out d --set solver.t_end=0.02 --set outputs.vtk=false "
+                 "--set outputs.html=false --set outputs.plot=false");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string contact = test::slurp(dir / "d/contact.csv");
+  const auto row = contact.find('\n') + 1;  // t = 0: no active point
+  EXPECT_EQ(contact.substr(row, contact.find('\n', row) - row).substr(0, 4), "0,0,") << contact;
+  for (const char* bad : {"--reflected 0.5", "--top open --base open --reflected 1",
+                          "--top open --base open --reflected -0.2",
+                          "--top open --base open --reflected 0.5 --gathered 0.5"}) {
+    expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--reflected");
+  }
+  expect_refused(dir, "gen cone --top open --base open --reflected 0.5 --wrap --out l.yaml",
+                 "--wrap");
+}
+
 }  // namespace cli_gen_patterns_test
 }  // namespace finseg

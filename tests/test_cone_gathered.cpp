@@ -131,8 +131,8 @@ ConeSpec lab_cone() {
 
 // That cone on 0.1 mm paper with contact on, started from `folded` (vertices of the
 // pattern), each face cut n x n.
-Model cone_model(const std::vector<Vec3>& folded, int n) {
-  CreasePattern p = cone_crease_pattern(lab_cone());
+Model cone_model(const std::vector<Vec3>& folded, int n, const ConeSpec& s = lab_cone()) {
+  CreasePattern p = cone_crease_pattern(s);
   p.vertices_folded_m = folded;
   validate_pattern(p, "<cone>");
   PatternSheetSpec spec;
@@ -159,6 +159,31 @@ TEST(ConeGathered, NoPairStartsInContact) {
                   n, n, m.bodies.size(), g.pairs, 1e3 * g.gap);
       // The contact's own detection agrees: no sample point touches.
       EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
+    }
+  }
+}
+
+// The wall stowed by reflection (`cone_reflected`): its bands lie nested, at the rings' fold
+// angles, not on one another, so it too starts with contact on and nothing touching; the lab
+// cone (12 pleats, 6 folds) included.
+TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
+  for (const int pleats : {6, 12}) {
+    for (const double gather : {0.5, 0.8}) {
+      for (const int n : {1, 2}) {
+        ConeSpec s = lab_cone();
+        s.pleats = pleats;
+        s.axial_folds = pleats == 12 ? 6 : 2;
+        s.reflect_gather = gather;
+        const Model m = cone_model(cone_reflected(s, cone_crease_pattern(s)), n, s);
+        const GapResult g = least_gap(m);
+        EXPECT_GT(g.pairs, 0);
+        EXPECT_GE(g.gap, 0) << pleats << " pleats, gather " << gather << ", " << n << " x " << n;
+        std::printf(
+            "reflected, %d pleats, gather %g, %d x %d cells: %zu segments, %d pairs, "
+            "least gap %.4g mm\n",
+            pleats, gather, n, n, m.bodies.size(), g.pairs, 1e3 * g.gap);
+        EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
+      }
     }
   }
 }

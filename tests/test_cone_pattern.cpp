@@ -28,6 +28,23 @@ ConeSpec open_cone() {
   return s;
 }
 
+// The facets of `x` are those of the development: every edge keeps its length, every quad
+// stays planar, and the seam closes (edge u -> v joined to v' -> u').
+void expect_rigid_and_closed(const CreasePattern& p, const std::vector<Vec3>& x) {
+  for (const PatternEdge& e : p.edges) {
+    const auto [a, b] = e.vertices;
+    EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(), (x[a] - x[b]).norm(), 1e-12);
+  }
+  for (const auto& f : p.faces) {  // the fourth corner in the first three's plane
+    const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
+    EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
+  }
+  for (const auto& [e0, e1] : p.seams) {
+    EXPECT_NEAR((x[p.edges[e0].vertices[0]] - x[p.edges[e1].vertices[1]]).norm(), 0, 1e-12);
+    EXPECT_NEAR((x[p.edges[e0].vertices[1]] - x[p.edges[e1].vertices[0]]).norm(), 0, 1e-12);
+  }
+}
+
 TEST(ConePattern, FoldedFormIsTheFacetedConeAndTheDevelopmentItsIsometry) {
   const ConeSpec s = open_cone();
   const CreasePattern p = cone_crease_pattern(s);
@@ -60,19 +77,9 @@ TEST(ConePattern, FoldedFormIsTheFacetedConeAndTheDevelopmentItsIsometry) {
     if (std::abs(u.norm() - slant) < 1e-12) widest = std::max(widest, std::atan2(u.y(), u.x()));
   }
   EXPECT_NEAR(widest, (G - 0.5) * beta, 1e-12);  // the last generator
-  // Every edge as long folded as flat; faces planar is checked by the FOLD reader.
-  for (const PatternEdge& e : p.edges) {
-    const auto [a, b] = e.vertices;
-    EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(),
-                (p.vertices_folded_m[a] - p.vertices_folded_m[b]).norm(), 1e-12);
-  }
-  // The seam closes: its two edges' ends meet in 3-D (edge u -> v joined to v' -> u').
+  // Every edge as long folded as flat, faces planar, the seam closed.
   ASSERT_EQ(p.seams.size(), static_cast<std::size_t>(s.axial_folds + 1));
-  for (const auto& [e0, e1] : p.seams) {
-    const auto v0 = p.edges[e0].vertices, v1 = p.edges[e1].vertices;
-    EXPECT_NEAR((p.vertices_folded_m[v0[0]] - p.vertices_folded_m[v1[1]]).norm(), 0, 1e-12);
-    EXPECT_NEAR((p.vertices_folded_m[v0[1]] - p.vertices_folded_m[v1[0]]).norm(), 0, 1e-12);
-  }
+  expect_rigid_and_closed(p, p.vertices_folded_m);
 }
 
 void expect_flat_foldable(const ConeSpec& s) {
@@ -162,24 +169,9 @@ TEST(ConePattern, FanStackIsTheFlatFoldedWallAndItsRingsZFold) {
   const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
   const double slant = std::hypot(s.base_radius, z_apex);
   const double beta = 2 * std::asin(s.base_radius * std::sin(kPi / G) / slant);
-  auto planar_isometry_closed = [&](const std::vector<Vec3>& x) {
-    for (const PatternEdge& e : p.edges) {
-      const auto [a, b] = e.vertices;
-      EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(), (x[a] - x[b]).norm(),
-                  1e-12);
-    }
-    for (const auto& f : p.faces) {  // quads: the fourth corner in the first three's plane
-      const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
-      EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
-    }
-    for (const auto& [e0, e1] : p.seams) {
-      EXPECT_NEAR((x[p.edges[e0].vertices[0]] - x[p.edges[e1].vertices[1]]).norm(), 0, 1e-12);
-      EXPECT_NEAR((x[p.edges[e0].vertices[1]] - x[p.edges[e1].vertices[0]]).norm(), 0, 1e-12);
-    }
-  };
   // Rings flat: one facet's place, every vertex at its flat distance from the apex.
   const std::vector<Vec3> flat = cone_fan_stack(s, p, 0);
-  planar_isometry_closed(flat);
+  expect_rigid_and_closed(p, flat);
   for (std::size_t v = 0; v < flat.size(); ++v) {
     EXPECT_NEAR(flat[v].z(), 0, 1e-15);
     EXPECT_NEAR(flat[v].norm(), p.vertices_flat_m[v].norm(), 1e-12);
@@ -188,7 +180,7 @@ TEST(ConePattern, FanStackIsTheFlatFoldedWallAndItsRingsZFold) {
   // Rings at 90 degrees: each ring crease folded by 90 degrees of its own kind, each
   // generator by 180 degrees.
   p.vertices_folded_m = cone_fan_stack(s, p, 0.5 * kPi);
-  planar_isometry_closed(p.vertices_folded_m);
+  expect_rigid_and_closed(p, p.vertices_folded_m);
   int rings = 0;
   for (std::size_t e = 0; e < p.edges.size(); ++e) {
     const PatternEdge& edge = p.edges[e];
@@ -224,20 +216,7 @@ TEST(ConePattern, GatheredWallIsRigidAndFoldsItsGeneratorsTowardTheirKinds) {
     if (p.edges[e].face_count() == 2) before[e] = measured_fold_angle(p, static_cast<int>(e));
   }
   p.vertices_folded_m = cone_gathered(s, p, 0.6);
-  for (const PatternEdge& e : p.edges) {  // rigid facets: every edge keeps its length
-    const auto [a, b] = e.vertices;
-    EXPECT_NEAR((p.vertices_flat_m[a] - p.vertices_flat_m[b]).norm(),
-                (p.vertices_folded_m[a] - p.vertices_folded_m[b]).norm(), 1e-12);
-  }
-  for (const auto& f : p.faces) {  // and stays planar
-    const auto& x = p.vertices_folded_m;
-    const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]).normalized();
-    EXPECT_NEAR(n.dot(x[f[3]] - x[f[0]]), 0, 1e-12);
-  }
-  for (const auto& [e0, e1] : p.seams) {  // the seam stays closed
-    const auto v0 = p.edges[e0].vertices, v1 = p.edges[e1].vertices;
-    EXPECT_NEAR((p.vertices_folded_m[v0[0]] - p.vertices_folded_m[v1[1]]).norm(), 0, 1e-12);
-  }
+  expect_rigid_and_closed(p, p.vertices_folded_m);
   // Rings stay flat; each generator turns from the deployed pyramid's angle towards its own
   // kind (valleys, even generators, up towards 180 degrees; mountains down towards -180).
   int generators = 0;
@@ -257,6 +236,100 @@ TEST(ConePattern, GatheredWallIsRigidAndFoldsItsGeneratorsTowardTheirKinds) {
   ConeSpec closed = s;
   closed.top_disc = true;
   EXPECT_THROW(cone_gathered(closed, cone_crease_pattern(closed), 0.5), InputError);
+}
+
+// Stowed by reflection (docs/folding.md, "The cone stowed by reflection"): the gathered
+// wall with its rings made planar by their zigzag, each band below a ring reflected across
+// the ring's plane. Closed form of a reflection across horizontal planes: every vertex keeps
+// the gathered wall's x and y, the rings are horizontal, the height is the tallest band's;
+// the facets stay rigid and the seam closed; each generator changes kind at every ring (the
+// Miura vertex's straight pair) and each ring is one kind, alternating ring by ring; every
+// ring vertex flat-foldable.
+TEST(ConePattern, ReflectedWallIsTheGatheredWallsBandsMirroredAcrossTheirRings) {
+  for (const int pleats : {6, 12}) {
+    for (const double gather : {0.0, 0.5, 0.9}) {
+      SCOPED_TRACE(testing::Message() << pleats << " pleats, gather " << gather);
+      ConeSpec s = open_cone();
+      s.pleats = pleats;
+      s.reflect_gather = gather;
+      CreasePattern p = cone_crease_pattern(s);
+      const int W = 2 * pleats + 1, B = s.axial_folds + 1;
+      auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
+      const std::vector<Vec3> g = cone_gathered(s, p, gather), x = cone_reflected(s, p);
+      expect_rigid_and_closed(p, x);
+      for (int r = 1; r < B; ++r) {  // interior rings horizontal in the gathered wall
+        for (int l = 0; l <= W; ++l) EXPECT_NEAR(g[vid(r, l)].z(), g[vid(r, 0)].z(), 1e-12);
+      }
+      for (std::size_t v = 0; v < x.size(); ++v) {
+        EXPECT_NEAR(x[v].x(), g[v].x(), 1e-12);
+        EXPECT_NEAR(x[v].y(), g[v].y(), 1e-12);
+      }
+      // Each band keeps its height and the bands zigzag about the ring planes: the stowed
+      // wall is about one band tall (the end bands' height differs by their flat end rings).
+      auto extent = [&](const std::vector<Vec3>& at, int first_ring, int last_ring) {
+        double lo = 1e9, hi = -1e9;
+        for (int r = first_ring; r <= last_ring; ++r) {
+          for (int l = 0; l <= W; ++l)
+            lo = std::min(lo, at[vid(r, l)].z()), hi = std::max(hi, at[vid(r, l)].z());
+        }
+        return hi - lo;
+      };
+      double tallest = 0;
+      for (int b = 0; b < B; ++b) {
+        EXPECT_NEAR(extent(x, b, b + 1), extent(g, b, b + 1), 1e-12);
+        tallest = std::max(tallest, extent(g, b, b + 1));
+      }
+      EXPECT_LT(extent(x, 0, B), 1.1 * tallest);
+      EXPECT_NEAR(extent(g, 0, B), s.height, 0.2 * s.height);
+      // Kinds: measured in the stowed state, as the pattern says.
+      p.vertices_folded_m = x;
+      std::map<std::pair<int, int>, double> generator;  // (band, generator) -> fold
+      std::map<int, std::vector<double>> ring;          // ring -> its chords' folds
+      for (std::size_t e = 0; e < p.edges.size(); ++e) {
+        const PatternEdge& edge = p.edges[e];
+        if (edge.face_count() != 2) continue;
+        const double measured = measured_fold_angle(p, static_cast<int>(e));
+        EXPECT_NEAR(measured, edge.fold_angle, 1e-12);
+        EXPECT_EQ(edge.assignment,
+                  measured > 0 ? EdgeAssignment::Valley : EdgeAssignment::Mountain);
+        EXPECT_GT(std::abs(measured), 1e-3) << "edge " << e;
+        const auto [u, v] = edge.vertices;
+        if (u / (W + 1) == v / (W + 1)) {
+          ring[u / (W + 1)].push_back(measured);
+        } else {
+          generator[{std::min(u, v) / (W + 1), u % (W + 1)}] = measured;
+        }
+      }
+      EXPECT_EQ(generator.size(), static_cast<std::size_t>(2 * pleats * B));
+      for (const auto& [key, fold] : generator) {
+        if (key.first + 1 < B) {
+          EXPECT_NEAR(generator.at({key.first + 1, key.second}), -fold, 1e-9);
+        }
+      }
+      ASSERT_EQ(ring.size(), static_cast<std::size_t>(B - 1));
+      for (const auto& [r, folds] : ring) {
+        for (double f : folds) {
+          EXPECT_GT(f * folds.front(), 0) << "ring " << r;
+        }
+        if (r > 1) {
+          EXPECT_LT(folds.front() * ring.at(r - 1).front(), 0) << "ring " << r;
+        }
+      }
+      expect_flat_foldable(s);
+    }
+  }
+  ConeSpec s = open_cone();
+  s.reflect_gather = 1.0;
+  EXPECT_THROW(cone_crease_pattern(s), InputError);
+  s.reflect_gather = 0.5;
+  s.wrap = true;
+  EXPECT_THROW(cone_crease_pattern(s), InputError);
+  s.wrap = false;
+  s.top_disc = true;
+  EXPECT_THROW(cone_crease_pattern(s), InputError);
+  s.top_disc = false;
+  s.reflect_gather = -1;
+  EXPECT_THROW(cone_reflected(s, cone_crease_pattern(s)), InputError);
 }
 
 }  // namespace cone_pattern_test

@@ -62,7 +62,8 @@ BodyForces contact_forces(const Model& m, const State& s) {
 
 // Contact points of a state without history, every sample of every pair tested: the side a
 // point takes is entry_side()'s without history (nearly parallel plates: the source centre's
-// side; else the point's own).
+// side where the point lies within the two half thicknesses of the target's plane; else the
+// point's own).
 int brute_force_points(const Model& m, const State& s) {
   int points = 0;
   const int n = static_cast<int>(m.bodies.size());
@@ -80,7 +81,9 @@ int brute_force_points(const Model& m, const State& s) {
         const bool parallel = std::abs(n_t.dot(s.R_WB[src].col(2))) > std::cos(30 * kDegToRad);
         for (const PlateSample& k : plate_samples(ss, m.contact.samples_per_edge)) {
           const Vec3 p_W = s.p_W[src] + s.R_WB[src] * k.r_B;
-          const double h = parallel ? n_t.dot(s.p_W[src] - s.p_W[tgt]) : n_t.dot(p_W - G.p_W);
+          const double own = n_t.dot(p_W - G.p_W), reach = ss.r + st.r;
+          const double h =
+              parallel && std::abs(own) < reach ? n_t.dot(s.p_W[src] - s.p_W[tgt]) : own;
           if (point_on_plate(G, st, p_W, ss.r, h >= 0 ? 1 : -1).depth > 0) ++points;
         }
       }

@@ -238,6 +238,55 @@ std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, 
   return out;
 }
 
+// The cone stowed by reflection (`--reflected F`, cone_reflected): the pattern's folded
+// coordinates are the stowed wall, radially gathered and axially reflected at once; one face
+// of the base band is clamped and the top band's facet across the axis from it is pulled
+// along the axis until it stands as high above the clamped face as on the deployed cone.
+void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p) {
+  const std::vector<Vec3> deployed = p.vertices_folded_m;
+  p.vertices_folded_m = cone_reflected(s, p);
+  const int clamped = cone_face(s, s.axial_folds, 1), pulled = cone_face(s, 0, s.pleats + 1);
+  auto rise = [&](const std::vector<Vec3>& x) {
+    return (folded_centroid(x, p.faces[pulled]) - folded_centroid(x, p.faces[clamped])).z();
+  };
+  const double travel = rise(deployed) - rise(p.vertices_folded_m);
+  const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
+  const double contact_stiffness = most_force / std::pow(0.25 * o.thickness, 1.5);
+  const std::string scene_name = fs::path(o.out).filename().string();
+  const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
+  const Vec2 at = face_centroid(p, pulled);
+  const std::string yaml = fmt::format(
+      "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
+      "axial folds,\n"
+      "# open ends, stowed by reflection: the wall gathered {:g} of the way to every other "
+      "generator on the axis\n"
+      "# and each band below a ring reflected across the ring's plane (radially and axially "
+      "folded at once,\n"
+      "# every facet rigid, no layers touching; docs/folding.md, \"The cone stowed by "
+      "reflection\").\n"
+      "# Pull the top open along the axis: finseg run {} --out deploy\n"
+      "title: cone stowed by reflection, top pulled along the axis\n{}"
+      "fixtures: {{panels: [{}]}}   # one face of the base band\n"
+      "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
+      "thickness\n"
+      "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
+      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+      "drives:\n"
+      "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: {:g},\n"
+      "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
+      "probes:\n"
+      "  - {{name: top, type: drive, drive: top}}\n"
+      "  - {{name: energy, type: energy}}\n"
+      "  - {{name: contact, type: contact}}\n"
+      "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
+      "         newton_tolerance: 0.1}}\n"
+      "outputs: {{vtk: true, html: true, plot: true}}\n",
+      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, scene_name,
+      sheet_sections(o, fold_file), clamped + 1, most_force, contact_stiffness, at.x(), at.y(),
+      gauge, travel, travel / 100, travel);
+  write_pair(o, p, yaml);
+}
+
 // "disc" or "open" for --top / --base.
 bool disc_end(const std::string& value, const char* option) {
   if (value != "disc" && value != "open") {
@@ -301,9 +350,16 @@ void register_cone(CLI::App* gen) {
               "generator 0 a mountain too: pleats + 1 mountains among the generators, the "
               "assignment a flat stack with thickness needs (docs/folding.md); not with "
               "--stowed, --gathered or --fold-to-gathered");
+  CLI::Option* reflected_option = c->add_option(
+      "--reflected", s->reflect_gather,
+      "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
+      "--gathered), each band below a ring reflected across the ring's plane, rings zigzagged "
+      "to make that exact (open ends only; radially and axially folded, no layers touching); "
+      "the top pulled along the axis");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
-               gathered, gathered_option, inflate, fold_gather, fold_gather_option] {
+               gathered, gathered_option, inflate, fold_gather, fold_gather_option,
+               reflected_option] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
@@ -315,6 +371,27 @@ void register_cone(CLI::App* gen) {
     s->base_disc = disc_end(ends->second, "--base");
     s->pleat_fold_angle = angles->first * kDegToRad;
     s->axial_fold_angle = angles->second * kDegToRad;
+    if (reflected_option->count() > 0) {
+      for (const CLI::Option* other : {stowed_option, gathered_option, fold_gather_option}) {
+        if (other->count() > 0) {
+          throw InputError("<cli>", "--reflected", "not with " + other->get_name());
+        }
+      }
+      if (*inflate) throw InputError("<cli>", "--inflate", "needs --gathered");
+      if (!(s->reflect_gather >= 0 && s->reflect_gather < 1)) {
+        throw InputError("<cli>", "--reflected",
+                         fmt::format("{}; allowed [0, 1)", s->reflect_gather));
+      }
+      if (s->top_disc || s->base_disc) {
+        throw InputError("<cli>", "--reflected", "needs --top open --base open");
+      }
+      if (s->wrap) throw InputError("<cli>", "--wrap", "not with --reflected");
+      CreasePattern p;
+      in_scene_file(
+          "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
+      write_reflected_cone(*o, *s, p);
+      return;
+    }
     const bool from_stack = stowed_option->count() > 0;
     if (from_stack && (s->top_disc || s->base_disc)) {
       throw InputError("<cli>", "--stowed", "needs --top open --base open");

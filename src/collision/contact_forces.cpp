@@ -49,9 +49,12 @@ BodyKin<double> kin_of(const State& s, int i) {
 /// the contact from: the side it is on, unless its path since the last commit (straight, in
 /// the target's frame) went through the target's face; then the side it came from, so that
 /// a step carrying the plates through each other meets the full force. Without history, for
-/// nearly parallel plates the side of the source centroid (robust for stacks set up with
-/// some penetration).
-int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const PlateShape& st) {
+/// nearly parallel plates the side of the source centroid where the point lies within `reach`
+/// (the two half thicknesses) of the target's plane (robust for stacks set up with some
+/// penetration); a point farther is on its own side (plates at an angle whose planes cross
+/// beside each other, as nested folded layers do, are not through each other).
+int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const PlateShape& st,
+               double reach) {
   const Vec3 now =
       state.R_WB[tgt].transpose() * (state.p_W[src] + state.R_WB[src] * r_B - state.p_W[tgt]);
   const ContactState& h = state.contact;
@@ -65,7 +68,9 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
   }
   const Vec3 n_tgt = state.R_WB[tgt].col(2);
   const bool parallel = std::abs(n_tgt.dot(state.R_WB[src].col(2))) > std::cos(30 * kDegToRad);
-  if (parallel) return n_tgt.dot(state.p_W[src] - state.p_W[tgt]) >= 0 ? 1 : -1;
+  if (parallel && std::abs(now.z()) < reach) {
+    return n_tgt.dot(state.p_W[src] - state.p_W[tgt]) >= 0 ? 1 : -1;
+  }
   return now.z() >= 0 ? 1 : -1;
 }
 
@@ -98,8 +103,8 @@ bool direction_may_touch(const State& state, int src, int tgt, const PlateShape&
   const int above = lo >= reach ? 1 : hi <= -reach ? -1 : 0;
   if (above == 0 || anchored) return true;
   const ContactState& h = state.contact;
-  if (h.p_W.size() != state.p_W.size() || h.R_WB.size() != state.R_WB.size())
-    return !(above * (R_TW * (state.p_W[src] - state.p_W[tgt])).z() > 0);  // entry_side's centre
+  // Without history every sample, beyond reach on that side, is on its own (entry_side).
+  if (h.p_W.size() != state.p_W.size() || h.R_WB.size() != state.R_WB.size()) return false;
   const Mat3 R_TW_was = h.R_WB[tgt].transpose();
   for (const Vec2& v : vs) {
     const double was =
@@ -166,7 +171,7 @@ void detect(const Model& model, const State& state, DetectFor what, const Contac
         // Overlapping layers that have not parted have no side: the one the point is on now.
         const int kept = an        ? an->side
                          : ignored ? 0
-                                   : entry_side(state, src, tgt, samples[k].r_B, st);
+                                   : entry_side(state, src, tgt, samples[k].r_B, st, ss.r + st.r);
         const int side = kept != 0 ? kept : G.R_WB.col(2).dot(p_W - G.p_W) >= 0 ? 1 : -1;
         const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
         if (!(c.depth > 0)) continue;

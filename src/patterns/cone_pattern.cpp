@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "patterns/pattern_checks.hpp"
 
 namespace finseg {
 namespace {
@@ -28,11 +29,33 @@ void validate(const ConeSpec& s) {
     fail("hub_fraction", fmt::format("{}; allowed range (0, 1)", s.hub_fraction));
   if (s.axial_folds < 0 || s.axial_folds > 500)
     fail("axial_folds", fmt::format("{}; allowed 0..500", s.axial_folds));
+  if (s.reflect_gather >= 0) {
+    if (!(s.reflect_gather < 1)) {
+      fail("reflect_gather", fmt::format("{}; allowed range [0, 1)", s.reflect_gather));
+    }
+    if (s.top_disc || s.base_disc) {
+      fail("reflect_gather", "the wall stowed by reflection has open ends (no top or base disc)");
+    }
+    if (s.wrap) fail("reflect_gather", "not with wrap (the fan fold's assignment)");
+  }
   for (const auto& [field, a] : {std::pair{"pleat_fold_angle", s.pleat_fold_angle},
                                  std::pair{"axial_fold_angle", s.axial_fold_angle}}) {
     if (!(a > 0 && a < kPi))
       fail(field, fmt::format("{} deg; allowed range (0, 180) deg", a / kDegToRad));
   }
+}
+
+// Angles to the downward axis of the even (a_in) and odd (a_out) generators of the wall
+// gathered by `gather` (cone_gathered): a_in = (1 - gather) x the deployed angle, a_out the
+// root of cos beta = cos a_in cos a_out + sin a_in sin a_out cos(2 pi / G) (neighbours beta
+// apart: the facets rigid) that is the deployed angle at gather = 0.
+std::pair<double, double> gathered_axis_angles(const ConeSpec& s, double beta, double gather) {
+  const int G = 2 * s.pleats;
+  const double z_apex = s.height * s.base_radius / (s.base_radius - s.top_radius);
+  const double a0 = std::atan2(s.base_radius, z_apex);
+  const double a_in = (1 - gather) * a0;
+  const double A = std::cos(a_in), Bc = std::sin(a_in) * std::cos(2 * kPi / G);
+  return {a_in, std::atan2(Bc, A) + std::acos(std::cos(beta) / std::hypot(A, Bc))};
 }
 
 }  // namespace
@@ -79,12 +102,29 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   p.meta.frame_title = fmt::format("cone, {} pleats, {} axial folds", s.pleats, s.axial_folds);
   // Interior rings zigzag as a Miura sheet's zigzag lines do: odd generators' vertices lie
   // further out by delta (a sector angle of about 60 degrees at mid-height).
+  // Stowed by reflection they lie further out by a factor instead, the one that puts each
+  // ring in a horizontal plane when the wall is gathered (even generators at a_in to the
+  // axis, odd at a_out: rho cos a_in = factor rho cos a_out), so that it can be reflected.
   const double rho_mid = 0.5 * (rho_top + rho_base);
   const double delta =
       std::min(0.4 * (rho_base - rho_top) / B, rho_mid * beta / std::tan(60 * kDegToRad));
+  double factor = 1;
+  if (s.reflect_gather >= 0) {
+    const auto [a_in, a_out] = gathered_axis_angles(s, beta, s.reflect_gather);
+    factor = std::cos(a_in) / std::cos(a_out);
+    const double rho_last = rho_top + (rho_base - rho_top) * (B - 1) / B;
+    if (!(std::cos(a_out) > 0 && factor * rho_last < rho_base - 0.5 * (rho_base - rho_top) / B)) {
+      throw InputError("<api>", "reflect_gather",
+                       fmt::format("{}: the rings' zigzag (factor {:.4g}) would reach the next "
+                                   "ring; a smaller share or fewer axial folds",
+                                   s.reflect_gather, factor));
+    }
+  }
   auto ring_radius = [&](int r, int k) {  // ring r on generator k (modulo G)
     const double rho = rho_top + (rho_base - rho_top) * r / B;
-    return rho + ((r > 0 && r < B && ((k % G) + G) % G % 2 == 1) ? delta : 0.0);
+    const bool zigzag = r > 0 && r < B && ((k % G) + G) % G % 2 == 1;
+    if (!zigzag) return rho;
+    return s.reflect_gather >= 0 ? factor * rho : rho + delta;
   };
   auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
   for (int r = 0; r <= B; ++r) {
@@ -191,6 +231,15 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
     }
   }
   derive_edge_faces(p, "<cone>");
+  if (s.reflect_gather >= 0) {  // kinds and fold angles of the stowed state
+    CreasePattern stowed = p;
+    stowed.vertices_folded_m = cone_reflected(s, p);
+    for (std::size_t e = 0; e < p.edges.size(); ++e) {
+      if (p.edges[e].face_count() != 2) continue;
+      const double angle = measured_fold_angle(stowed, static_cast<int>(e));
+      set(p.edges[e], angle > 0 ? 1.0 : -1.0, std::abs(angle));
+    }
+  }
   return p;
 }
 
@@ -257,14 +306,9 @@ std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, doubl
     return a < -1e-12 ? a + 2 * kPi : std::max(a, 0.0);  // the development spans [0, G beta]
   };
   const double beta = flat_angle(2) - flat_angle(1);
-  // Generator k at azimuth 2 pi (k + 1/2) / G, at angle a_k to the downward axis. Even ones
-  // at a_in; odd ones at a_out with cos beta = cos a_in cos a_out + sin a_in sin a_out
-  // cos(2 pi / G) (neighbours beta apart: the facets rigid), the root that is the deployed
-  // angle at gather = 0.
-  const double a0 = std::atan2(s.base_radius, z_apex);
-  const double a_in = (1 - gather) * a0;
-  const double A = std::cos(a_in), Bc = std::sin(a_in) * std::cos(2 * kPi / G);
-  const double a_out = std::atan2(Bc, A) + std::acos(std::cos(beta) / std::hypot(A, Bc));
+  // Generator k at azimuth 2 pi (k + 1/2) / G, at angle a_k to the downward axis: even ones
+  // at a_in, odd ones at a_out.
+  const auto [a_in, a_out] = gathered_axis_angles(s, beta, gather);
   std::vector<Vec3> g(G + 2);  // g[k]: generator k - 1 (modulo G), as in cone_crease_pattern
   for (int k = 0; k <= G + 1; ++k) {
     const int gen = ((k - 1) % G + G) % G;
@@ -281,6 +325,31 @@ std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, doubl
     const Vec3 e = (b - a.dot(b) * a).normalized();
     const double t = phi - (k - 0.5) * beta;
     x[v] = apex + p.vertices_flat_m[v].norm() * (std::cos(t) * a + std::sin(t) * e);
+  }
+  return x;
+}
+
+std::vector<Vec3> cone_reflected(const ConeSpec& s, const CreasePattern& p) {
+  if (s.reflect_gather < 0) {
+    throw InputError("<api>", "reflect_gather",
+                     fmt::format("{}; allowed range [0, 1)", s.reflect_gather));
+  }
+  std::vector<Vec3> x = cone_gathered(s, p, s.reflect_gather);
+  const int W = 2 * s.pleats + 1, B = s.axial_folds + 1;
+  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
+  for (int r = B - 1; r >= 1; --r) {  // the distal part first: ring r is where gathering left it
+    Vec3 centre = Vec3::Zero(), normal = Vec3::Zero();  // Newell's normal of the ring polygon
+    for (int l = 0; l < W; ++l) {
+      centre += x[vid(r, l)] / W;
+      normal += x[vid(r, l)].cross(x[vid(r, l + 1)]);
+    }
+    normal.normalize();
+    for (int q = r + 1; q <= B; ++q) {
+      for (int l = 0; l <= W; ++l) {
+        Vec3& v = x[vid(q, l)];
+        v -= 2 * normal.dot(v - centre) * normal;
+      }
+    }
   }
   return x;
 }

@@ -33,6 +33,14 @@ struct ConeSpec {
   /// Kawasaki hold as for the fan fold; the fan stack and the gathered wall are the fan
   /// fold's and refuse it.
   bool wrap = false;
+  /// Stowed by reflection (docs/folding.md, "The cone stowed by reflection"): >= 0, the
+  /// share [0, 1) of the gathering (cone_gathered) at which the stowed state sits. Each
+  /// interior ring's vertices on the odd generators lie further from the apex by the factor
+  /// that makes the ring planar in the wall gathered so far, and every band below a ring is
+  /// reflected across that ring's plane (cone_reflected): the wall folded radially and
+  /// axially at once, every facet rigid. Creases' kinds and fold angles are that state's.
+  /// < 0 (default): the fan fold's rings and kinds. Open ends only, not with `wrap`.
+  double reflect_gather = -1;
 };
 
 /// Faces of the pattern: band b (0 at the top) of wedge w is face b (2 pleats + 1) + w
@@ -63,5 +71,13 @@ std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, doub
 /// this is a state a sheet with thickness can take: no two facets coincide. Vertices as in
 /// `p` = `cone_crease_pattern(s)` with both ends open; gather in [0, 1) (throws InputError).
 std::vector<Vec3> cone_gathered(const ConeSpec& s, const CreasePattern& p, double gather);
+
+/// The stowed state by reflection: the open wall gathered by `s.reflect_gather`
+/// (cone_gathered), then, ring by ring from the top, everything below each interior ring
+/// reflected across the ring's (horizontal) plane. Isometric with planar facets: the
+/// footprint is the gathered wall's, the height its tallest band's. Vertices as in `p` =
+/// `cone_crease_pattern(s)`; throws InputError("<api>", "reflect_gather", ...) unless
+/// `s.reflect_gather` is in [0, 1).
+std::vector<Vec3> cone_reflected(const ConeSpec& s, const CreasePattern& p);
 
 }  // namespace finseg
