@@ -69,9 +69,8 @@ std::vector<Cell> cells_of(const SegmentMesh& mesh, const Model& model,
       s.n = Vec2(s.t.y(), -s.t.x());
       s.m = 0.5 * (a + b);
       const Vec2 r = s.m - cell.c;
-      if (!std::getenv("FINSEG_NODELTA"))
-        cell.Delta += s.l / cell.area * 0.5 * s.n *
-                      Eigen::RowVector3d(r.x() * r.x(), r.y() * r.y(), 2 * r.x() * r.y());
+      cell.Delta += s.l / cell.area * 0.5 * s.n *
+                    Eigen::RowVector3d(r.x() * r.x(), r.y() * r.y(), 2 * r.x() * r.y());
       const auto it = link_at.find({static_cast<int>(c), loop[i]});
       if (it != link_at.end()) {
         const CellLink& l = mesh.links[it->second];
