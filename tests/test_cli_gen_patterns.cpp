@@ -161,7 +161,8 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
 
 // Stowed by reflection (`--reflected F`, docs/folding.md): the pattern's folded form is the
 // stowed wall and reads back (planar faces, the seam closed); the run starts with contact on
-// and no point touching, the pull along the axis; bad combinations are refused.
+// and no point touching, the pull along the axis; inflated, its chamber closes; bad
+// combinations are refused.
 TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreRefused) {
   TempDir dir;
   auto r = run_finseg(dir,
@@ -179,6 +180,14 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   const std::string contact = test::slurp(dir / "d/contact.csv");
   const auto row = contact.find('\n') + 1;  // t = 0: no active point
   EXPECT_EQ(contact.substr(row, contact.find('\n', row) - row).substr(0, 4), "0,0,") << contact;
+  // Inflated instead (--inflate): the chamber of the wall and its end plates closes.
+  r = run_finseg(dir,
+                 "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                 "--base open --reflected 0.5 --inflate --out ri.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(test::slurp(dir / "ri.yaml").find("chambers:"), std::string::npos);
+  r = run_finseg(dir, "inspect ri.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
   for (const char* bad : {"--reflected 0.5", "--top open --base open --reflected 1",
                           "--top open --base open --reflected -0.2",
                           "--top open --base open --reflected 0.5 --gathered 0.5"}) {

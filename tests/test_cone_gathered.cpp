@@ -186,6 +186,16 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
       }
     }
   }
+  // The shipped example: apart, with the generator's contact stiffness for its own pull.
+  const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/reflected.yaml");
+  const Model& m = scene.model;
+  ASSERT_TRUE(m.contact.enabled);
+  EXPECT_GE(least_gap(m).gap, 0);
+  EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
+  ASSERT_EQ(m.drives.size(), 1u);
+  const double force = m.drives[0].stiffness * m.drives[0].travel;
+  EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * m.bodies.front().thickness, 1.5), force,
+              1e-3 * force);
 }
 
 TEST(ConeGathered, TheFanStacksFacetsCoincide) {

@@ -238,11 +238,66 @@ std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, 
   return out;
 }
 
+// The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
+// where the rings start), filled from vacuum by an inflator with the air that fills the
+// deployed faceted frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both
+// ends), and bled by a vent to space (docs/gas.md). `start` says where the wall starts;
+// `contact_force` (N) sets the contact stiffness as for the pull.
+void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
+                         const std::string& start, const std::string& title, int clamped,
+                         const std::string& clamped_is, double contact_force) {
+  const int G = 2 * s.pleats;
+  const double polygon = 0.5 * G * std::sin(2 * kPi / G),
+               A_base = polygon * s.base_radius * s.base_radius,
+               A_top = polygon * s.top_radius * s.top_radius;
+  const double volume = s.height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
+  const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
+  const double contact_stiffness = contact_force / std::pow(0.25 * o.thickness, 1.5);
+  const std::string scene_name = fs::path(o.out).filename().string();
+  const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
+  const std::string gas_yaml = fmt::format(
+      "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
+      "axial folds,\n"
+      "# {},\n"
+      "# inflated: the wall and two fixed end plates (triangles from each end ring's centre,\n"
+      "# where the rings start) are one chamber of adiabatic air filled from vacuum by an\n"
+      "# inflator and bled by a vent to space (docs/gas.md).\n"
+      "# Run: finseg run {} --out inflated\n"
+      "title: {}\n{}"
+      "fixtures: {{panels: [{}]}}   # {}\n"
+      "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
+      "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
+      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+      "chambers:\n"
+      "  - name: cone\n"
+      "    faces:\n"
+      "      - {{bodies: all, outward: {}}}\n"
+      "    end_plates:\n{}{}"
+      "    gas: adiabatic\n"
+      "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
+      "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
+      "             temperature: [300, 300, 300, 300]}}\n"
+      "    vents:\n"
+      "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n"
+      "probes:\n"
+      "  - {{name: energy, type: energy}}\n"
+      "  - {{name: contact, type: contact}}\n"
+      "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
+      "outputs: {{vtk: true, html: true, plot: true}}\n",
+      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, start, scene_name, title,
+      sheet_sections(o, fold_file), clamped + 1, clamped_is, contact_force, contact_stiffness, "+z",
+      end_plates(s, p.vertices_folded_m, 0, true),
+      end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false), air_kg, volume, peak_flow,
+      peak_flow);
+  write_pair(o, p, gas_yaml);
+}
+
 // The cone stowed by reflection (`--reflected F`, cone_reflected): the pattern's folded
 // coordinates are the stowed wall, radially gathered and axially reflected at once; one face
 // of the base band is clamped and the top band's facet across the axis from it is pulled
 // along the axis until it stands as high above the clamped face as on the deployed cone.
-void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p) {
+void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p,
+                          bool inflate) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
   p.vertices_folded_m = cone_reflected(s, p);
   const int clamped = cone_face(s, s.axial_folds, 1), pulled = cone_face(s, 0, s.pleats + 1);
@@ -251,6 +306,15 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   };
   const double travel = rise(deployed) - rise(p.vertices_folded_m);
   const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
+  if (inflate) {
+    write_inflated_cone(o, s, p,
+                        fmt::format("stowed by reflection ({:g} of the way gathered, each band "
+                                    "below a ring reflected across it; no layers touching)",
+                                    s.reflect_gather),
+                        "cone stowed by reflection, inflated", clamped, "one face of the base band",
+                        most_force);
+    return;
+  }
   const double contact_stiffness = most_force / std::pow(0.25 * o.thickness, 1.5);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
@@ -264,12 +328,14 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "folded at once,\n"
       "# every facet rigid, no layers touching; docs/folding.md, \"The cone stowed by "
       "reflection\").\n"
-      "# Pull the top open along the axis: finseg run {} --out deploy\n"
+      "# No rigid motion leads out of it: the pull strains the facets and does not deploy the\n"
+      "# cone in the model (docs/folding.md). Pull the top along the axis:\n"
+      "#   finseg run {} --out deploy\n"
       "title: cone stowed by reflection, top pulled along the axis\n{}"
       "fixtures: {{panels: [{}]}}   # one face of the base band\n"
       "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
       "thickness\n"
-      "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
+      "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
       "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
       "drives:\n"
       "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: {:g},\n"
@@ -332,9 +398,10 @@ void register_cone(CLI::App* gen) {
                     "start from the fan stack Z-folded by this ring angle, deg [0, 180] (open "
                     "ends only); the base band pulled away from the top band");
   auto inflate = std::make_shared<bool>(false);
-  c->add_flag("--inflate", *inflate,
-              "with --gathered: deploy by gas instead of the pull (one chamber of the wall "
-              "closed by fixed end plates, an inflator and a vent to space; docs/gas.md)");
+  c->add_flag(
+      "--inflate", *inflate,
+      "with --gathered or --reflected: deploy by gas instead of the pull (one chamber of the wall "
+      "closed by fixed end plates, an inflator and a vent to space; docs/gas.md)");
   CLI::Option* gathered_option = c->add_option(
       "--gathered", *gathered,
       "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
@@ -377,7 +444,6 @@ void register_cone(CLI::App* gen) {
           throw InputError("<cli>", "--reflected", "not with " + other->get_name());
         }
       }
-      if (*inflate) throw InputError("<cli>", "--inflate", "needs --gathered");
       if (!(s->reflect_gather >= 0 && s->reflect_gather < 1)) {
         throw InputError("<cli>", "--reflected",
                          fmt::format("{}; allowed [0, 1)", s->reflect_gather));
@@ -389,7 +455,7 @@ void register_cone(CLI::App* gen) {
       CreasePattern p;
       in_scene_file(
           "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-      write_reflected_cone(*o, *s, p);
+      write_reflected_cone(*o, *s, p, *inflate);
       return;
     }
     const bool from_stack = stowed_option->count() > 0;
@@ -409,7 +475,9 @@ void register_cone(CLI::App* gen) {
     if (from_gathered && !(*gathered >= 0 && *gathered < 1)) {
       throw InputError("<cli>", "--gathered", fmt::format("{}; allowed [0, 1)", *gathered));
     }
-    if (*inflate && !from_gathered) throw InputError("<cli>", "--inflate", "needs --gathered");
+    if (*inflate && !from_gathered) {
+      throw InputError("<cli>", "--inflate", "needs --gathered or --reflected");
+    }
     const bool to_gathered = fold_gather_option->count() > 0;
     if (to_gathered && (s->top_disc || s->base_disc)) {
       throw InputError("<cli>", "--fold-to-gathered", "needs --top open --base open");
@@ -570,49 +638,11 @@ void register_cone(CLI::App* gen) {
       write_pair(*o, p, yaml);
       return;
     }
-    // The inflator's air fills the deployed faceted frustum to 1 kPa at 300 K, injected over
-    // 60 ms (ramps of 10 ms at both ends).
-    const int G = 2 * s->pleats;
-    const double polygon = 0.5 * G * std::sin(2 * kPi / G),
-                 A_base = polygon * s->base_radius * s->base_radius,
-                 A_top = polygon * s->top_radius * s->top_radius;
-    const double volume = s->height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
-    const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
-    const std::string gas_yaml = fmt::format(
-        "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
-        "axial folds,\n"
-        "# gathered {:g} of the way to every other generator on the axis (no facets coincide),\n"
-        "# inflated: the wall and two fixed end plates (triangles from each end ring's centre,\n"
-        "# where the rings start) are one chamber of adiabatic air filled from vacuum by an\n"
-        "# inflator and bled by a vent to space (docs/gas.md).\n"
-        "# Run: finseg run {} --out inflated\n"
-        "title: gathered cone inflated\n{}"
-        "fixtures: {{panels: [{}]}}   # one face of the top band\n"
-        "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
-        "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
-        "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
-        "chambers:\n"
-        "  - name: cone\n"
-        "    faces:\n"
-        "      - {{bodies: all, outward: {}}}\n"
-        "    end_plates:\n{}{}"
-        "    gas: adiabatic\n"
-        "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
-        "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
-        "             temperature: [300, 300, 300, 300]}}\n"
-        "    vents:\n"
-        "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n"
-        "probes:\n"
-        "  - {{name: energy, type: energy}}\n"
-        "  - {{name: contact, type: contact}}\n"
-        "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
-        "outputs: {{vtk: true, html: true, plot: true}}\n",
-        s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, *gathered, scene_name,
-        sheet_sections(*o, fold_file), clamped + 1, most_force, contact_stiffness, "+z",
-        end_plates(*s, p.vertices_folded_m, 0, true),
-        end_plates(*s, p.vertices_folded_m, s->axial_folds + 1, false), air_kg, volume, peak_flow,
-        peak_flow);
-    write_pair(*o, p, gas_yaml);
+    write_inflated_cone(*o, *s, p,
+                        fmt::format("gathered {:g} of the way to every other generator on the axis "
+                                    "(no facets coincide)",
+                                    *gathered),
+                        "gathered cone inflated", clamped, "one face of the top band", most_force);
   });
 }
 
