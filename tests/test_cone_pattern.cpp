@@ -321,6 +321,10 @@ TEST(ConePattern, ReflectedWallIsTheGatheredWallsBandsMirroredAcrossTheirRings) 
   ConeSpec s = open_cone();
   s.reflect_gather = 1.0;
   EXPECT_THROW(cone_crease_pattern(s), InputError);
+  s.reflect_gather = 0.5;  // rings 2 mm apart: the zigzag (factor 1.039) would cross the next
+  s.axial_folds = 100;
+  EXPECT_THROW(cone_crease_pattern(s), InputError);
+  s.axial_folds = 2;
   s.reflect_gather = 0.5;
   s.wrap = true;
   EXPECT_THROW(cone_crease_pattern(s), InputError);

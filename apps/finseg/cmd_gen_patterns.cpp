@@ -238,6 +238,13 @@ std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, 
   return out;
 }
 
+// Contact stiffness of the generated cone scenes (docs/folding.md, "Contact stiffness of the
+// generated scenes"): `force` (N) carried by one face sinks it a quarter of the thickness (m),
+// Hertz exponent 1.5.
+double contact_stiffness_rule(double force, double thickness) {
+  return force / std::pow(0.25 * thickness, 1.5);
+}
+
 // The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
 // where the rings start), filled from vacuum by an inflator with the air that fills the
 // deployed faceted frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both
@@ -252,7 +259,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
                A_top = polygon * s.top_radius * s.top_radius;
   const double volume = s.height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
   const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
-  const double contact_stiffness = contact_force / std::pow(0.25 * o.thickness, 1.5);
+  const double contact_stiffness = contact_stiffness_rule(contact_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
   const std::string gas_yaml = fmt::format(
@@ -315,7 +322,7 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
                         most_force);
     return;
   }
-  const double contact_stiffness = most_force / std::pow(0.25 * o.thickness, 1.5);
+  const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
   const Vec2 at = face_centroid(p, pulled);
@@ -546,7 +553,7 @@ void register_cone(CLI::App* gen) {
     // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
     // it a quarter of the thickness.
     const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
-    const double contact_stiffness = most_force / std::pow(0.25 * o->thickness, 1.5);
+    const double contact_stiffness = contact_stiffness_rule(most_force, o->thickness);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
     // Gathering is a rigid motion: the static solver lands on it (docs/folding.md).
