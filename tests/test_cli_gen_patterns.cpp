@@ -186,6 +186,7 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
                  "--base open --reflected 0.5 --inflate --out ri.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(test::slurp(dir / "ri.yaml").find("chambers:"), std::string::npos);
+  EXPECT_NE(test::slurp(dir / "ri.yaml").find("damping_time: 0.0001"), std::string::npos);
   r = run_finseg(dir, "inspect ri.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* bad : {"--reflected 0.5", "--top open --base open --reflected 1",

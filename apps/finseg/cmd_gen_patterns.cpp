@@ -87,10 +87,14 @@ std::string discretisation_lines(const SheetOptions& o) {
   return s;
 }
 
-// The scene's material, sheet and pattern sections (laws resting at the pattern's angles).
-std::string sheet_sections(const SheetOptions& o, const std::string& fold_file) {
+// The scene's material, sheet and pattern sections (laws resting at the pattern's angles);
+// `damping_time` (s) > 0 adds the material's stiffness-proportional damping.
+std::string sheet_sections(const SheetOptions& o, const std::string& fold_file,
+                           double damping_time = 0) {
+  const std::string damping =
+      damping_time > 0 ? fmt::format(", damping_time: {:g}", damping_time) : "";
   return fmt::format(
-      "material: {{youngs_modulus: {:g}, poisson_ratio: 0.3, density: {:g}}}\n"
+      "material: {{youngs_modulus: {:g}, poisson_ratio: 0.3, density: {:g}{}}}\n"
       "sheet: {{thickness: {:g}}}\n"
       "pattern:\n"
       "  file: {}\n"
@@ -100,8 +104,8 @@ std::string sheet_sections(const SheetOptions& o, const std::string& fold_file) 
       "  crease_law_length: 1.0   # laws below are per metre of crease\n"
       "  mountain_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n"
       "  valley_law: {{type: linear, stiffness: {:g}, rest_angle_deg: 0}}\n",
-      o.modulus, o.density, o.thickness, fold_file, discretisation_lines(o), o.crease_stiffness,
-      o.crease_stiffness);
+      o.modulus, o.density, damping, o.thickness, fold_file, discretisation_lines(o),
+      o.crease_stiffness, o.crease_stiffness);
 }
 
 // Writes the pattern beside the scene and the scene itself (both atomically).
@@ -249,10 +253,11 @@ double contact_stiffness_rule(double force, double thickness) {
 // where the rings start), filled from vacuum by an inflator with the air that fills the
 // deployed faceted frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both
 // ends), and bled by a vent to space (docs/gas.md). `start` says where the wall starts;
-// `contact_force` (N) sets the contact stiffness as for the pull.
+// `contact_force` (N) sets the contact stiffness as for the pull; `damping_time` (s) the
+// material's damping (0: none).
 void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
                          const std::string& start, const std::string& title, int clamped,
-                         const std::string& clamped_is, double contact_force) {
+                         const std::string& clamped_is, double contact_force, double damping_time) {
   const int G = 2 * s.pleats;
   const double polygon = 0.5 * G * std::sin(2 * kPi / G),
                A_base = polygon * s.base_radius * s.base_radius,
@@ -269,6 +274,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "# inflated: the wall and two fixed end plates (triangles from each end ring's centre,\n"
       "# where the rings start) are one chamber of adiabatic air filled from vacuum by an\n"
       "# inflator and bled by a vent to space (docs/gas.md).\n"
+      "{}"
       "# Run: finseg run {} --out inflated\n"
       "title: {}\n{}"
       "fixtures: {{panels: [{}]}}   # {}\n"
@@ -291,9 +297,12 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "  - {{name: contact, type: contact}}\n"
       "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
       "outputs: {{vtk: true, html: true, plot: true}}\n",
-      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, start, scene_name, title,
-      sheet_sections(o, fold_file), clamped + 1, clamped_is, contact_force, contact_stiffness, "+z",
-      end_plates(s, p.vertices_folded_m, 0, true),
+      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, start,
+      damping_time > 0 ? "# material.damping_time: without it the facets' ringing holds the "
+                         "implicit steps at\n# 1e-8 to 1e-6 s once layers meet (docs/gas.md).\n"
+                       : "",
+      scene_name, title, sheet_sections(o, fold_file, damping_time), clamped + 1, clamped_is,
+      contact_force, contact_stiffness, "+z", end_plates(s, p.vertices_folded_m, 0, true),
       end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false), air_kg, volume, peak_flow,
       peak_flow);
   write_pair(o, p, gas_yaml);
@@ -319,7 +328,7 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
                                     "below a ring reflected across it; no layers touching)",
                                     s.reflect_gather),
                         "cone stowed by reflection, inflated", clamped, "one face of the base band",
-                        most_force);
+                        most_force, 1e-4);
     return;
   }
   const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
@@ -649,7 +658,8 @@ void register_cone(CLI::App* gen) {
                         fmt::format("gathered {:g} of the way to every other generator on the axis "
                                     "(no facets coincide)",
                                     *gathered),
-                        "gathered cone inflated", clamped, "one face of the top band", most_force);
+                        "gathered cone inflated", clamped, "one face of the top band", most_force,
+                        0.0);
   });
 }
 
