@@ -432,7 +432,7 @@ void register_cone(CLI::App* gen) {
   c->add_flag("--wrap", s->wrap,
               "generator 0 a mountain too: pleats + 1 mountains among the generators, the "
               "assignment a flat stack with thickness needs (docs/folding.md); not with "
-              "--stowed, --gathered or --fold-to-gathered");
+              "--stowed, --gathered, --fold-to-gathered or --reflected");
   CLI::Option* reflected_option = c->add_option(
       "--reflected", s->reflect_gather,
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
