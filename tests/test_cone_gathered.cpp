@@ -146,6 +146,20 @@ Model cone_model(const std::vector<Vec3>& folded, int n, const ConeSpec& s = lab
   return m;
 }
 
+// A shipped example scene `m`: contact on, no pair closer than the thickness, no contact
+// point at the start, and the generator's contact stiffness: one face carrying the reference
+// force sinks a quarter of the thickness, F = K (t/4)^1.5, with F the largest pull (stiffness
+// x travel) of the gauge of `pull`, the example's pull scene.
+void expect_example_start(const Model& m, const Model& pull) {
+  ASSERT_TRUE(m.contact.enabled);
+  EXPECT_GE(least_gap(m).gap, 0);
+  EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
+  ASSERT_EQ(pull.drives.size(), 1u);
+  const double force = pull.drives[0].stiffness * pull.drives[0].travel;
+  const double t = m.bodies.front().thickness;
+  EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * t, 1.5), force, 1e-3 * force);
+}
+
 TEST(ConeGathered, NoPairStartsInContact) {
   const ConeSpec s = lab_cone();
   const CreasePattern p = cone_crease_pattern(s);
@@ -188,14 +202,7 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
   }
   // The shipped example: apart, with the generator's contact stiffness for its own pull.
   const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/reflected.yaml");
-  const Model& m = scene.model;
-  ASSERT_TRUE(m.contact.enabled);
-  EXPECT_GE(least_gap(m).gap, 0);
-  EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
-  ASSERT_EQ(m.drives.size(), 1u);
-  const double force = m.drives[0].stiffness * m.drives[0].travel;
-  EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * m.bodies.front().thickness, 1.5), force,
-              1e-3 * force);
+  expect_example_start(scene.model, scene.model);
 }
 
 TEST(ConeGathered, TheFanStacksFacetsCoincide) {
@@ -212,17 +219,8 @@ TEST(ConeGathered, ExampleScenesStartApartWithTheRulesContactStiffness) {
   for (const char* file : {"gathered.yaml", "inflate.yaml"}) {
     SCOPED_TRACE(file);
     const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
-    const Model& m = scene.model;
-    ASSERT_TRUE(m.contact.enabled);
-    EXPECT_GE(least_gap(m).gap, 0);
-    EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
-    // One face carrying the reference force sinks a quarter of the thickness: F = K (t/4)^1.5
-    // with F the gauge's largest pull, stiffness x travel, of the pull scene.
-    const double t = m.bodies.front().thickness;
     const Scene pull = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/gathered.yaml");
-    ASSERT_EQ(pull.model.drives.size(), 1u);
-    const double force = pull.model.drives[0].stiffness * pull.model.drives[0].travel;
-    EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * t, 1.5), force, 1e-3 * force);
+    expect_example_start(scene.model, pull.model);
   }
   // The inflation's chamber closes (read_scene refuses an open one) round the whole wall.
   const Scene gas = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/inflate.yaml");

@@ -227,7 +227,7 @@ std::vector<Vec3> face_points(const std::vector<Vec3>& x, const std::vector<int>
 // Fixed end plates closing wall ring `ring` (0: the top): a fan of triangles from the ring's
 // centre, counter-clockwise seen from outside the cone (from above at the top).
 std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, bool top) {
-  const int W = 2 * s.pleats + 1, first = ring * (W + 1);
+  const int W = 2 * s.pleats + 1, first = cone_wall_vertex(s, ring, 0);
   Vec3 c = Vec3::Zero();
   for (int l = 0; l < W; ++l) c += x[first + l];
   c /= W;
@@ -247,6 +247,28 @@ std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, 
 // Hertz exponent 1.5.
 double contact_stiffness_rule(double force, double thickness) {
   return force / std::pow(0.25 * thickness, 1.5);
+}
+
+// The cone scenes' pull, drives to outputs: a gauge of `gauge` N/m at flat point `at` drawn
+// `travel` m along `direction` (a YAML list) in 1 s, the drive, energy and contact probes, the
+// implicit solver.
+std::string top_pull_sections(const Vec2& at, const std::string& direction, double gauge,
+                              double travel) {
+  return fmt::format(
+      "drives:\n"
+      "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
+      "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
+      "probes:\n"
+      "  - {{name: top, type: drive, drive: top}}\n"
+      "  - {{name: energy, type: energy}}\n"
+      "  - {{name: contact, type: contact}}\n"
+      "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
+      "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
+      "# measured\")\n"
+      "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
+      "         newton_tolerance: 0.1}}\n"
+      "outputs: {{vtk: true, html: true, plot: true}}\n",
+      at.x(), at.y(), direction, gauge, travel, travel / 100, travel);
 }
 
 // The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
@@ -334,7 +356,6 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
-  const Vec2 at = face_centroid(p, pulled);
   const std::string yaml = fmt::format(
       "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
       "axial folds,\n"
@@ -353,19 +374,10 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "thickness\n"
       "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
       "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
-      "drives:\n"
-      "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: [0, 0, 1], stiffness: {:g},\n"
-      "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
-      "probes:\n"
-      "  - {{name: top, type: drive, drive: top}}\n"
-      "  - {{name: energy, type: energy}}\n"
-      "  - {{name: contact, type: contact}}\n"
-      "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
-      "         newton_tolerance: 0.1}}\n"
-      "outputs: {{vtk: true, html: true, plot: true}}\n",
+      "{}",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, scene_name,
-      sheet_sections(o, fold_file), clamped + 1, most_force, contact_stiffness, at.x(), at.y(),
-      gauge, travel, travel / 100, travel);
+      sheet_sections(o, fold_file), clamped + 1, most_force, contact_stiffness,
+      top_pull_sections(face_centroid(p, pulled), "[0, 0, 1]", gauge, travel));
   write_pair(o, p, yaml);
 }
 
@@ -622,19 +634,7 @@ void register_cone(CLI::App* gen) {
         "  duration: 1.0\n"
         "{}"
         "  solver: {}\n"
-        "drives:\n"
-        "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
-        "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
-        "probes:\n"
-        "  - {{name: top, type: drive, drive: top}}\n"
-        "  - {{name: energy, type: energy}}\n"
-        "  - {{name: contact, type: contact}}\n"
-        "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
-        "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
-        "# measured\")\n"
-        "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
-        "         newton_tolerance: 0.1}}\n"
-        "outputs: {{vtk: true, html: true, plot: true}}\n",
+        "{}",
         s->base_radius, s->top_radius, s->height, s->pleats, s->axial_folds, ends->first,
         ends->second,
         s->wrap ? ",\n# generator 0 a mountain too (--wrap: pleats + 1 mountains, docs/folding.md)"
@@ -648,8 +648,8 @@ void register_cone(CLI::App* gen) {
         : s->base_disc        ? "the base disc's hub"
                               : "one face of the base band",
         most_force, contact_stiffness, from_stack || gathers ? " initial_overlap: ignore," : "",
-        to_gathered ? 1.0 : *fraction, coarse_fold, folding_solver, top.x(), top.y(), direction,
-        gauge, travel, travel / 100, travel);
+        to_gathered ? 1.0 : *fraction, coarse_fold, folding_solver,
+        top_pull_sections(top, direction, gauge, travel));
     if (!*inflate) {
       write_pair(*o, p, yaml);
       return;

@@ -64,6 +64,10 @@ int cone_face(const ConeSpec& s, int band, int wedge) {
   return band * (2 * s.pleats + 1) + wedge;
 }
 
+int cone_wall_vertex(const ConeSpec& s, int ring, int line) {
+  return ring * (2 * s.pleats + 2) + line;
+}
+
 int cone_hub_face(const ConeSpec& s, bool top) {
   if (!(top ? s.top_disc : s.base_disc)) return -1;
   const int W = 2 * s.pleats + 1;
@@ -126,7 +130,6 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
     if (!zigzag) return rho;
     return s.reflect_gather >= 0 ? factor * rho : rho + delta;
   };
-  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
   for (int r = 0; r <= B; ++r) {
     for (int l = 0; l <= W; ++l) {
       const double phi = line_angle(l);
@@ -143,7 +146,8 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   }
   for (int b = 0; b < B; ++b) {
     for (int w = 0; w < W; ++w) {
-      p.faces.push_back({vid(b, w), vid(b + 1, w), vid(b + 1, w + 1), vid(b, w + 1)});
+      p.faces.push_back({cone_wall_vertex(s, b, w), cone_wall_vertex(s, b + 1, w),
+                         cone_wall_vertex(s, b + 1, w + 1), cone_wall_vertex(s, b, w + 1)});
     }
   }
   // The end discs: a rigid hub and a band of trapezoids out to the wall's ring, pleated on
@@ -156,11 +160,11 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   };
   auto add_disc = [&](int wall_ring, const Vec2& centre, bool from_below) {
     Disc d{static_cast<int>(p.vertices_flat_m.size()), 0};
-    const double z = p.vertices_folded_m[vid(wall_ring, 1)].z();
+    const double z = p.vertices_folded_m[cone_wall_vertex(s, wall_ring, 1)].z();
     for (const double scale : {1.0, s.hub_fraction}) {
       if (scale != 1.0) d.hub0 = static_cast<int>(p.vertices_flat_m.size());
       for (int l = 0; l < W; ++l) {
-        const Vec3 x = p.vertices_folded_m[vid(wall_ring, l)];
+        const Vec3 x = p.vertices_folded_m[cone_wall_vertex(s, wall_ring, l)];
         const Vec3 at(scale * x.x(), scale * x.y(), z);
         p.vertices_flat_m.emplace_back(centre + Vec2(at.x(), from_below ? -at.y() : at.y()));
         p.vertices_folded_m.push_back(at);
@@ -207,19 +211,22 @@ CreasePattern cone_crease_pattern(const ConeSpec& s) {
   p.has_fold_angles = true;
   for (int b = 0; b < B; ++b) {
     for (int k = 0; k < G; ++k) {  // generator k is line k + 1
-      set(p.edges[edge(vid(b, k + 1), vid(b + 1, k + 1))], generator_sign(k), s.pleat_fold_angle);
+      set(p.edges[edge(cone_wall_vertex(s, b, k + 1), cone_wall_vertex(s, b + 1, k + 1))],
+          generator_sign(k), s.pleat_fold_angle);
     }
-    p.seams.push_back({edge(vid(b, 0), vid(b + 1, 0)), edge(vid(b, W), vid(b + 1, W))});
+    p.seams.push_back({edge(cone_wall_vertex(s, b, 0), cone_wall_vertex(s, b + 1, 0)),
+                       edge(cone_wall_vertex(s, b, W), cone_wall_vertex(s, b + 1, W))});
   }
   for (int r = 1; r < B; ++r) {
     for (int l = 0; l < W; ++l) {
-      set(p.edges[edge(vid(r, l), vid(r, l + 1))], ring_sign(r, l), s.axial_fold_angle);
+      set(p.edges[edge(cone_wall_vertex(s, r, l), cone_wall_vertex(s, r, l + 1))], ring_sign(r, l),
+          s.axial_fold_angle);
     }
   }
   for (const auto& [d, ring] : discs) {
     for (int l = 0; l < W; ++l) {  // the disc's rim to the wall's ring
-      p.seams.push_back(
-          {edge(vid(ring, l), vid(ring, l + 1)), edge(d.ring0 + l, d.ring0 + (l + 1) % W)});
+      p.seams.push_back({edge(cone_wall_vertex(s, ring, l), cone_wall_vertex(s, ring, l + 1)),
+                         edge(d.ring0 + l, d.ring0 + (l + 1) % W)});
     }
     for (int l = 1; l < W; ++l) {  // pleats on the generators' azimuths
       PatternEdge& e = p.edges[edge(d.hub0 + l, d.ring0 + l)];
@@ -271,15 +278,16 @@ std::vector<Vec3> cone_fan_stack(const ConeSpec& s, const CreasePattern& p, doub
   std::vector<Vec3> x(p.vertices_flat_m.size());
   for (std::size_t v = 0; v < x.size(); ++v) x[v] = stacked(p.vertices_flat_m[v]);
   // Ring r's chord in the stack: its vertices on generators 0 and 1 (lines 1 and 2).
-  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
   for (int r = B - 1; r >= 1; --r) {  // fold the distal part, innermost ring last
-    const Vec3 a = x[vid(r, 1)], e = (x[vid(r, 2)] - a).normalized();
+    const Vec3 a = x[cone_wall_vertex(s, r, 1)],
+               e = (x[cone_wall_vertex(s, r, 2)] - a).normalized();
     // Ring r in wedge 1 is of kind (-1)^(r + 1) (valley positive); wedge 1 lies mirrored
     // in the stack, so its valley is a negative turn about the chord.
     const double angle = (r % 2 == 0 ? 1.0 : -1.0) * ring_angle;
     const Eigen::AngleAxisd turn(angle, e);
     for (int q = r + 1; q <= B; ++q) {
-      for (int l = 0; l <= W; ++l) x[vid(q, l)] = a + turn * (x[vid(q, l)] - a);
+      for (int l = 0; l <= W; ++l)
+        x[cone_wall_vertex(s, q, l)] = a + turn * (x[cone_wall_vertex(s, q, l)] - a);
     }
   }
   return x;
@@ -336,17 +344,16 @@ std::vector<Vec3> cone_reflected(const ConeSpec& s, const CreasePattern& p) {
   }
   std::vector<Vec3> x = cone_gathered(s, p, s.reflect_gather);
   const int W = 2 * s.pleats + 1, B = s.axial_folds + 1;
-  auto vid = [&](int ring, int line) { return ring * (W + 1) + line; };
   for (int r = B - 1; r >= 1; --r) {  // the distal part first: ring r is where gathering left it
     Vec3 centre = Vec3::Zero(), normal = Vec3::Zero();  // Newell's normal of the ring polygon
     for (int l = 0; l < W; ++l) {
-      centre += x[vid(r, l)] / W;
-      normal += x[vid(r, l)].cross(x[vid(r, l + 1)]);
+      centre += x[cone_wall_vertex(s, r, l)] / W;
+      normal += x[cone_wall_vertex(s, r, l)].cross(x[cone_wall_vertex(s, r, l + 1)]);
     }
     normal.normalize();
     for (int q = r + 1; q <= B; ++q) {
       for (int l = 0; l <= W; ++l) {
-        Vec3& v = x[vid(q, l)];
+        Vec3& v = x[cone_wall_vertex(s, q, l)];
         v -= 2 * normal.dot(v - centre) * normal;
       }
     }

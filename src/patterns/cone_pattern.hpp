@@ -49,6 +49,10 @@ struct ConeSpec {
 /// `base_disc` asks for it.
 int cone_face(const ConeSpec& s, int band, int wedge);
 
+/// Wall vertex on ring `ring` (0 at the top .. axial_folds + 1) and wedge line `line` (0 and
+/// 2 pleats + 1: the seam's two sides, 1 .. 2 pleats: generators 0 .. 2 pleats - 1).
+int cone_wall_vertex(const ConeSpec& s, int ring, int line);
+
 /// The hub face of the top disc (top = true) or of the base disc; -1 for an open end.
 int cone_hub_face(const ConeSpec& s, bool top);
 
