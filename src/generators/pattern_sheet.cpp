@@ -94,11 +94,6 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
   }
   if (!(s.damping_time >= 0)) throw InputError(src, "damping_time", "must be >= 0 s");
   if (s.bending_rigidity) require_positive(*s.bending_rigidity, src, "bending_rigidity", "N m");
-  if (s.hessian_bending.value_or(false) && !p.seams.empty()) {
-    throw InputError(src, "finseg:seams",
-                     "the consistent cell Hessian bending (hessian_bending) does not support "
-                     "seams yet");
-  }
   if (!p.seams.empty() && !(s.start_folded && !p.vertices_folded_m.empty())) {
     throw InputError(src, "finseg:seams",
                      "a seam joins edges that lie apart on the flat sheet: the pattern must "
@@ -280,11 +275,9 @@ std::vector<MembraneCellDef> membrane_cells(
 }
 
 // PatternSheetSpec::hessian_bending, unset: on where the joints and corrections do not converge
-// (triangles), off on quadrilaterals (where they are more accurate) and with seams.
-bool uses_hessian_bending(const PatternSheetSpec& s, const CreasePattern& p,
-                          const SegmentMesh& mesh) {
+// (triangles), off on quadrilaterals (where they are more accurate).
+bool uses_hessian_bending(const PatternSheetSpec& s, const SegmentMesh& mesh) {
   if (s.hessian_bending) return *s.hessian_bending;
-  if (!p.seams.empty()) return false;
   return std::any_of(mesh.cells.begin(), mesh.cells.end(),
                      [](const std::vector<int>& c) { return c.size() == 3; });
 }
@@ -311,7 +304,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   cut.segment_size = spec.segment_size;
   cut.crease_refinement = spec.crease_refinement;
   const SegmentMesh mesh = subdivide_pattern(p, cut);
-  const bool hessian = uses_hessian_bending(spec, p, mesh);
+  const bool hessian = uses_hessian_bending(spec, mesh);
   // The cell Hessian carries the sheet's bending next to a crease itself: no series spring.
   const bool series = spec.crease_bending_in_series && !hessian;
   const bool folded = spec.start_folded && !mesh.folded_m.empty();

@@ -65,8 +65,7 @@ struct PatternSheetSpec {
   /// Bending by the consistent cell Hessian (generators/plate_hessian.hpp) in place of the
   /// plate joints' bending and twist springs and the cell corrections: it converges on
   /// triangulated segmentations, where the corrections do not (docs/stiffness.md, "Triangular
-  /// cells"). Unset: on when some cell is a triangle and the pattern has no seams, else off.
-  /// True with seams is refused.
+  /// cells"). Unset: on when some cell is a triangle, else off.
   std::optional<bool> hessian_bending;
   std::vector<int> fixed_faces;  ///< pattern faces (0-based) clamped in place
   bool start_folded = true;      ///< start from the pattern's folded coordinates if any

@@ -1,7 +1,9 @@
 // Consistent cell Hessian bending (docs/stiffness.md, "Triangular cells"). All in the flat
 // sheet's material coordinates and in slopes g = grad w; an element's relative rotation
 // Theta (inner relative to outer, rotation vector (w_y, -w_x)) is the slope jump
-// J = (-Theta_y, Theta_x) from its outer cell into its inner one.
+// J = (-Theta_y, Theta_x) from its outer cell into its inner one. Each cell's energy is built
+// in its own material coordinates: a neighbour across a seam (whose copy of the side lies
+// elsewhere on the flat sheet) is unrolled next to it first.
 #include "generators/plate_hessian.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -13,6 +15,27 @@ namespace {
 
 using Mat23 = Eigen::Matrix<double, 2, 3>;
 using Mat = Eigen::MatrixXd;
+using Mat2 = Eigen::Matrix2d;
+
+// A rigid motion of the flat sheet taking one cell's material coordinates into another's: the
+// identity except across a seam.
+struct Unroll {
+  Mat2 Q = Mat2::Identity();
+  Vec2 b = Vec2::Zero();
+  Vec2 point(const Vec2& p) const { return Q * p + b; }
+  // This map, then `next`.
+  Unroll then(const Unroll& next) const { return {next.Q * Q, next.Q * b + next.b}; }
+};
+
+// The map that takes the segment p0 -> p1 onto q0 -> q1 (of the same length).
+Unroll unroll_onto(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
+  const Vec2 u = (p1 - p0).normalized(), v = (q1 - q0).normalized();
+  Unroll r;
+  r.Q << u.x() * v.x() + u.y() * v.y(), u.y() * v.x() - u.x() * v.y(),
+      u.x() * v.y() - u.y() * v.x(), u.x() * v.x() + u.y() * v.y();
+  r.b = q0 - r.Q * p0;
+  return r;
+}
 
 // The slope change K d over d for the curvature K = (k_xx, k_yy, k_xy).
 Mat23 hess_times(const Vec2& d) {
@@ -33,6 +56,7 @@ struct Side {
   int element = -1, neighbour = -1;
   double sign = 1;    // slope jump into the neighbour = sign * J of the element
   double weight = 0;  // the side's plate-joint rotational stiffness, N m
+  Unroll from_nb;     // the neighbour's material coordinates into this cell's
 };
 
 struct Cell {
@@ -45,13 +69,38 @@ struct Cell {
   std::vector<Side> sides;
 };
 
+// Delta: the Crouzeix-Raviart tilt per curvature, from the sides' midpoints and normals.
+Mat23 tilt_of(const Cell& cell) {
+  Mat23 Delta = Mat23::Zero();
+  for (const Side& s : cell.sides) {
+    const Vec2 r = s.m - cell.c;
+    Delta += s.l / cell.area * 0.5 * s.n *
+             Eigen::RowVector3d(r.x() * r.x(), r.y() * r.y(), 2 * r.x() * r.y());
+  }
+  return Delta;
+}
+
+// Cell X as seen in other material coordinates (u: X's into those).
+Cell unrolled(const Cell& X, const Unroll& u) {
+  Cell Y = X;
+  Y.c = u.point(X.c);
+  for (Side& s : Y.sides) {
+    s.m = u.point(s.m);
+    s.n = u.Q * s.n;
+    s.t = u.Q * s.t;
+    s.from_nb = s.from_nb.then(u);
+  }
+  Y.Delta = tilt_of(Y);
+  return Y;
+}
+
 std::vector<Cell> cells_of(const SegmentMesh& mesh, const Model& model,
                            const std::vector<int>& link_element) {
   std::map<std::pair<int, int>, int> link_at;  // (cell, first vertex of its side) -> link
   for (std::size_t k = 0; k < mesh.links.size(); ++k) {
     const CellLink& l = mesh.links[k];
     link_at[{l.left, l.a}] = static_cast<int>(k);
-    link_at[{l.right, l.b}] = static_cast<int>(k);
+    link_at[{l.right, l.b_right}] = static_cast<int>(k);  // it runs b -> a on its copy
   }
   std::vector<Cell> cells(mesh.cells.size());
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
@@ -68,9 +117,6 @@ std::vector<Cell> cells_of(const SegmentMesh& mesh, const Model& model,
       s.t = (b - a) / s.l;
       s.n = Vec2(s.t.y(), -s.t.x());
       s.m = 0.5 * (a + b);
-      const Vec2 r = s.m - cell.c;
-      cell.Delta += s.l / cell.area * 0.5 * s.n *
-                    Eigen::RowVector3d(r.x() * r.x(), r.y() * r.y(), 2 * r.x() * r.y());
       const auto it = link_at.find({static_cast<int>(c), loop[i]});
       if (it != link_at.end()) {
         const CellLink& l = mesh.links[it->second];
@@ -79,14 +125,47 @@ std::vector<Cell> cells_of(const SegmentMesh& mesh, const Model& model,
         s.neighbour = l.left == static_cast<int>(c) ? l.right : l.left;
         s.sign = l.left == static_cast<int>(c) ? 1.0 : -1.0;
         s.weight = e.K[4];
+        if (l.seam >= 0) {
+          const Vec2 &la = mesh.flat_m[l.a], &lb = mesh.flat_m[l.b];
+          const Vec2 &ra = mesh.flat_m[l.a_right], &rb = mesh.flat_m[l.b_right];
+          s.from_nb = s.sign > 0 ? unroll_onto(ra, rb, la, lb) : unroll_onto(la, lb, ra, rb);
+        }
         const bool crease = e.crease >= 0, nb_fixed = model.bodies[s.neighbour].fixed;
         s.kind = nb_fixed ? (crease ? SideKind::Support : SideKind::Clamp)
                           : (crease ? SideKind::Free : SideKind::Interior);
       }
       cell.sides.push_back(s);
     }
+    cell.Delta = tilt_of(cell);
   }
   return cells;
+}
+
+// The cells around `t` (its neighbours and theirs: what its fit and its neighbours' fits
+// read) in t's material coordinates, with the maps that took them there.
+struct Stencil {
+  std::map<int, Cell> cell;
+  std::map<int, Unroll> to_t;
+};
+
+Stencil stencil_of(const std::vector<Cell>& cells, int t) {
+  Stencil st;
+  st.cell[t] = cells[t];
+  st.to_t[t] = Unroll{};
+  std::vector<int> frontier{t};
+  for (int depth = 0; depth < 2; ++depth) {
+    std::vector<int> next;
+    for (int x : frontier) {
+      for (const Side& s : st.cell.at(x).sides) {
+        if (s.neighbour < 0 || st.cell.count(s.neighbour)) continue;
+        st.to_t[s.neighbour] = s.from_nb;  // already composed into t's coordinates
+        st.cell[s.neighbour] = unrolled(cells[s.neighbour], s.from_nb);
+        next.push_back(s.neighbour);
+      }
+    }
+    frontier = std::move(next);
+  }
+  return st;
 }
 
 // A cell's least-squares curvature K = F J and its weighted residuals R J, J the stacked slope
@@ -96,8 +175,8 @@ struct Fit {
   Mat F, R;
 };
 
-Fit fit_of(const std::vector<Cell>& cells, int x, const std::map<int, int>& col, int ncol) {
-  const Cell& X = cells[x];
+Fit fit_of(const std::map<int, Cell>& cells, int x, const std::map<int, int>& col, int ncol) {
+  const Cell& X = cells.at(x);
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 3>> As;
   std::vector<Mat> Ps;
   std::vector<double> ws;
@@ -107,7 +186,7 @@ Fit fit_of(const std::vector<Cell>& cells, int x, const std::map<int, int>& col,
     P.block<2, 2>(0, 2 * col.at(s.element)) = s.sign * Eigen::Matrix2d::Identity();
     Mat23 A;
     if (s.kind == SideKind::Interior) {
-      const Cell& N = cells[s.neighbour];
+      const Cell& N = cells.at(s.neighbour);
       A = hess_times(N.c - X.c) + N.Delta - X.Delta;
     } else {
       A = hess_times(s.m - X.c) - X.Delta;  // the slope at the side's midpoint is zero
@@ -155,8 +234,9 @@ std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Mod
   C *= D;
   std::vector<PlateCellDef> out;
   for (std::size_t t = 0; t < cells.size(); ++t) {
-    const Cell& T = cells[t];
-    if (T.fixed) continue;
+    if (cells[t].fixed) continue;
+    const Stencil st = stencil_of(cells, static_cast<int>(t));
+    const Cell& T = st.cell.at(static_cast<int>(t));
     // Stencil: the elements on the cell's sides and on its free neighbours' sides.
     std::map<int, int> col;
     std::vector<int> order;
@@ -169,11 +249,11 @@ std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Mod
     };
     add(T);
     for (const Side& s : T.sides) {
-      if (s.kind == SideKind::Interior) add(cells[s.neighbour]);
+      if (s.kind == SideKind::Interior) add(st.cell.at(s.neighbour));
     }
     if (order.empty()) continue;
     const int ncol = 2 * static_cast<int>(order.size());
-    const Fit fT = fit_of(cells, static_cast<int>(t), col, ncol);
+    const Fit fT = fit_of(st.cell, static_cast<int>(t), col, ncol);
     // Slope at a point from cell X's plane and fit, less X's slope.
     auto extrapolate = [&](const Cell& X, const Fit& f, const Vec2& p) -> Mat {
       return (hess_times(p - X.c) - X.Delta) * f.F;
@@ -190,8 +270,8 @@ std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Mod
       }
       switch (s.kind) {
         case SideKind::Interior: {
-          const Cell& N = cells[s.neighbour];
-          const Fit fN = fit_of(cells, s.neighbour, col, ncol);
+          const Cell& N = st.cell.at(s.neighbour);
+          const Fit fN = fit_of(st.cell, s.neighbour, col, ncol);
           v = 0.5 * extrapolate(T, fT, s.m) + 0.5 * (jump + extrapolate(N, fN, s.m));
           break;
         }
@@ -219,7 +299,12 @@ std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Mod
     const Mat Lt = L * to_J, Rt = fT.R * to_J;
     PlateCellDef cell;
     cell.body = static_cast<int>(t);
-    for (int e : order) cell.sides.push_back({e, model.elements[e].R_outer_F, 1.0});
+    // Each element's rotation read in its outer cell's frame, turned into t's.
+    for (int e : order) {
+      Mat3 R_TO = Mat3::Identity();
+      R_TO.topLeftCorner<2, 2>() = st.to_t.at(model.elements[e].outer).Q;
+      cell.sides.push_back({e, R_TO * model.elements[e].R_outer_F, 1.0});
+    }
     cell.Q = T.area * Lt.transpose() * C * Lt + stabilisation * Rt.transpose() * Rt;
     out.push_back(std::move(cell));
   }

@@ -14,7 +14,8 @@ namespace finseg {
 /// One energy per free cell, in the relative rotations of the elements around it and around its
 /// neighbours. `link_element[k]` is the element on mesh.links[k]; `weight` of an element is the
 /// rotational stiffness its side would have as a plate joint (D l / h, N m), read from K[4] of
-/// `elements` (which must still hold it). No seams (the cells' material axes must coincide).
+/// `elements` (which must still hold it). Across a seam the neighbour is unrolled next to the
+/// cell (its material coordinates turned onto the cell's copy of the side).
 /// `stabilisation`: weight of the fit residuals against the joints' stiffness (see the doc).
 std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Model& model,
                                               const std::vector<int>& link_element, double D,
