@@ -109,6 +109,27 @@ TEST(SegmentMesh, FacesMeetSideToSideAndCoverThePattern) {
   for (int n : {1, 3}) expect_conforming_cover(p, subdivide_pattern(p, n), 2u * n);
 }
 
+// Subdivision::triangles: each quadrilateral cell four triangles about the mean of its
+// corners; triangles and larger faces cut as before; still a conforming cover.
+TEST(SegmentMesh, TriangleCellsCutEachQuadrilateralCellInFour) {
+  const CreasePattern p = mixed_faces();
+  for (int n : {1, 3}) {
+    Subdivision s;
+    s.n = n;
+    const SegmentMesh quads = subdivide_pattern(p, s);
+    s.triangles = true;
+    const SegmentMesh tris = subdivide_pattern(p, s);
+    std::size_t four_sided = 0;
+    for (const auto& c : quads.cells) four_sided += c.size() == 4;
+    EXPECT_EQ(four_sided, static_cast<std::size_t>(n * n));  // the quadrilateral face's
+    EXPECT_EQ(tris.cells.size(), quads.cells.size() + 3 * four_sided);
+    for (const auto& c : tris.cells) EXPECT_EQ(c.size(), 3u);
+    EXPECT_EQ(planned_cell_count(p, edge_cell_counts(p, s), true),
+              static_cast<double>(tris.cells.size()));
+    expect_conforming_cover(p, tris, 2u * n);
+  }
+}
+
 TEST(SegmentMesh, TargetSizeBoundsEveryCellSideAlongTheEdges) {
   // Rectangles 2 x 0.5 m at 0.3 m: ceil(2 / 0.3) = 7 cells along, ceil(0.5 / 0.3) = 2 across.
   const CreasePattern row = strip_of_panels(2, 2.0, 0.5, {EdgeAssignment::Flat});
@@ -321,6 +342,17 @@ TEST(PatternSubdivision, SceneCreaseLawsReachTheirEdge) {
   EXPECT_NEAR((base - listed) / (kM / (kK1 * kW) - kM / (kK2 * kW)), 1, 1e-6);
 }
 
+TEST(PatternSubdivision, SceneCellsTrianglesCutEachCellInFour) {
+  const test::TempDir dir;
+  write_fold((dir.path() / "strip.fold").string(), creased_strip());
+  const std::string file = (dir.path() / "strip.yaml").string();
+  const Model quads = parse_scene(strip_scene("subdivisions: 2", ""), file).model;
+  const Model tris =
+      parse_scene(strip_scene("subdivisions: 2\n  cells: triangles", ""), file).model;
+  EXPECT_EQ(tris.bodies.size(), 4 * quads.bodies.size());
+  for (const BodyDef& b : tris.bodies) EXPECT_EQ(material_outline(b).size(), 3u);
+}
+
 TEST(PatternSubdivision, BadSubdivisionsAndEdgeListsAreRefusedNamingTheField) {
   const test::TempDir dir;
   const CreasePattern p = creased_strip();
@@ -340,6 +372,7 @@ TEST(PatternSubdivision, BadSubdivisionsAndEdgeListsAreRefusedNamingTheField) {
   refused("segment_size: 0", "", "pattern.segment_size", "> 0");
   refused("subdivisions: 2\n  segment_size: 0.01", "", "pattern.segment_size", "either");
   refused("crease_refinement: 0.5", "", "pattern.crease_refinement", "[1, 100]");
+  refused("cells: hexagons", "", "pattern.cells", "allowed: quadrilaterals, triangles");
   refused("segment_size: 1e-7", "", "pattern.segment_size", "at most 4096");
   refused("subdivisions: 1", edge_law(99), "pattern.crease_laws[0].edges", "does not exist");
   refused("subdivisions: 1", edge_law(0), "pattern.crease_laws[0].edges", "'B'");

@@ -109,8 +109,9 @@ struct SolvedPlate {
   std::string status;
 };
 
-SolvedPlate solved(const TriPlate& tp) {
+SolvedPlate solved(const TriPlate& tp, bool triangle_cells = false) {
   PatternSheetSpec spec;
+  spec.triangle_cells = triangle_cells;
   spec.thickness = kT;
   spec.youngs_modulus = kE;
   spec.poisson_ratio = kNu;
@@ -136,11 +137,25 @@ SolvedPlate solved(const TriPlate& tp) {
   return out;
 }
 
+// The same square as n x n quadrilaterals in the same frame.
+TriPlate quadrilateral_square(int n, EdgeAssignment support) {
+  TriPlate tp = triangulated_square(n, Split::Diagonal, support);
+  CreasePattern& p = tp.pattern;
+  p.faces.erase(p.faces.begin(), p.faces.begin() + tp.plate_faces);
+  for (int j = n - 1; j >= 0; --j) {
+    for (int i = n - 1; i >= 0; --i) {
+      const int v = (n + 1) * j + i;
+      p.faces.insert(p.faces.begin(), {v, v + 1, v + n + 2, v + n + 1});
+    }
+  }
+  tp.plate_faces = n * n;
+  assign_support(tp, support);
+  return tp;
+}
+
 // Centre deflection coefficient w D / (q a^4); w averaged over the cells that hold the centre
 // (a vertex or a side midpoint of the triangulation).
-double centre_alpha(int n, Split split, EdgeAssignment support, std::string& status) {
-  const SolvedPlate sp = solved(triangulated_square(n, split, support));
-  status = sp.status;
+double centre_alpha_of(const SolvedPlate& sp) {
   const Vec2 centre(kA / 2, kA / 2);
   double w = 0;
   int count = 0;
@@ -152,6 +167,12 @@ double centre_alpha(int n, Split split, EdgeAssignment support, std::string& sta
     ++count;
   }
   return w / count * kD / (kQ * kA * kA * kA * kA);
+}
+
+double centre_alpha(int n, Split split, EdgeAssignment support, std::string& status) {
+  const SolvedPlate sp = solved(triangulated_square(n, split, support));
+  status = sp.status;
+  return centre_alpha_of(sp);
 }
 
 // Simply supported (hinges, M) or clamped (J) against the classical coefficient.
@@ -204,17 +225,8 @@ TEST(PlateTriangles, ClampedSquarePlateSplitIntoFans) {
 // joints and corrections on quadrilaterals (bit for bit what each gives when asked for).
 TEST(PlateTriangles, DefaultBendingIsTheHessianOnTrianglesAndTheCorrectionsOnQuadrilaterals) {
   const TriPlate tri = triangulated_square(3, Split::Diagonal, EdgeAssignment::Mountain);
-  CreasePattern quads = tri.pattern;  // the same frame around 3 x 3 squares
-  quads.faces.erase(quads.faces.begin(), quads.faces.begin() + tri.plate_faces);
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 3; ++i) {
-      const int v = 4 * j + i;
-      quads.faces.insert(quads.faces.begin(), {v, v + 1, v + 5, v + 4});
-    }
-  }
-  quads.edges = edges_from_faces(quads.faces);
-  derive_edge_faces(quads, "<quad plate>");
-  for (const CreasePattern* p : {&tri.pattern, static_cast<const CreasePattern*>(&quads)}) {
+  const CreasePattern quads = quadrilateral_square(3, EdgeAssignment::Mountain).pattern;
+  for (const CreasePattern* p : {&tri.pattern, &quads}) {
     PatternSheetSpec spec;
     spec.mountain_law = std::make_shared<LinearCreaseLaw>(0.0, 0.0);
     const Model by_default = build_pattern_model(*p, spec);
@@ -231,6 +243,24 @@ TEST(PlateTriangles, DefaultBendingIsTheHessianOnTrianglesAndTheCorrectionsOnQua
     }
     // The two methods differ: the plate joints' bending springs are the Hessian's to hold.
     EXPECT_NE(other.elements[0].K[4], asked.elements[0].K[4]);
+  }
+}
+
+// `cells: triangles` (PatternSheetSpec::triangle_cells) on a grid of squares cuts each into
+// the fan of four of the pattern split so: the same plate, the same deflection (to the static
+// solver's tolerance).
+TEST(PlateTriangles, TriangleCellsOnSquaresAreTheFanOfFour) {
+  for (const EdgeAssignment support : {EdgeAssignment::Mountain, EdgeAssignment::Join}) {
+    const SolvedPlate fans = solved(triangulated_square(5, Split::Fan, support));
+    const SolvedPlate cut = solved(quadrilateral_square(5, support), true);
+    ASSERT_EQ(fans.status, "ok");
+    ASSERT_EQ(cut.status, "ok");
+    const auto free_cells = [](const Model& m) {
+      return std::count_if(m.bodies.begin(), m.bodies.end(),
+                           [](const BodyDef& b) { return !b.fixed; });
+    };
+    EXPECT_EQ(free_cells(fans.model), free_cells(cut.model));  // the clamped frame cut too
+    EXPECT_NEAR(centre_alpha_of(cut) / centre_alpha_of(fans), 1, 1e-8);
   }
 }
 

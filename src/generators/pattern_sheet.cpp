@@ -296,14 +296,19 @@ Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
   return k;
 }
 
-Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
-                          const std::string& source) {
-  validate_spec(spec, p, source);
+Subdivision subdivision_of(const PatternSheetSpec& spec) {
   Subdivision cut;
   cut.n = spec.subdivisions;
   cut.segment_size = spec.segment_size;
   cut.crease_refinement = spec.crease_refinement;
-  const SegmentMesh mesh = subdivide_pattern(p, cut);
+  cut.triangles = spec.triangle_cells;
+  return cut;
+}
+
+Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
+                          const std::string& source) {
+  validate_spec(spec, p, source);
+  const SegmentMesh mesh = subdivide_pattern(p, subdivision_of(spec));
   const bool hessian = uses_hessian_bending(spec, mesh);
   // The cell Hessian carries the sheet's bending next to a crease itself: no series spring.
   const bool series = spec.crease_bending_in_series && !hessian;

@@ -11,6 +11,7 @@
 
 #include "model/model.hpp"
 #include "patterns/crease_pattern.hpp"
+#include "patterns/segment_mesh.hpp"
 
 namespace finseg {
 
@@ -44,6 +45,9 @@ struct PatternSheetSpec {
   /// (patterns/segment_mesh.hpp, Subdivision).
   double segment_size = 0;
   double crease_refinement = 1;  ///< >= 1: cells graded towards folded creases (Subdivision)
+  /// True: quadrilateral cells cut into four triangles each (Subdivision::triangles), which
+  /// then bend by the cell Hessian (hessian_bending)
+  bool triangle_cells = false;
   /// Crease laws by assignment (M, V; F and U creases use them by the sign of their fold
   /// angle when given, else they are plate joints). Each law's moment is for a crease of
   /// `crease_law_length` (m); a cell side of length l carries the share l / that length.
@@ -73,6 +77,9 @@ struct PatternSheetSpec {
   Vec3 origin_W = Vec3::Zero();  ///< world position of the pattern's origin, m
   Mat3 R_W0 = Mat3::Identity();  ///< orientation of the flat pattern's axes
 };
+
+/// How `spec` cuts the pattern's faces (subdivisions or segment size, grading, triangles).
+Subdivision subdivision_of(const PatternSheetSpec& spec);
 
 /// Builds bodies, elements and initial poses from a validated pattern (validate_pattern).
 /// Throws InputError (naming `source`) on an impossible spec or a crease without a law.

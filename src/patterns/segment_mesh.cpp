@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -143,7 +144,8 @@ CutPlan plan_cut(const CreasePattern& p, const Subdivision& s, const std::string
 // sides), and the cells of each face.
 class Cutter {
  public:
-  Cutter(const CreasePattern& p, const CutPlan& plan) : p_(p) {
+  Cutter(const CreasePattern& p, const CutPlan& plan, bool triangles)
+      : p_(p), triangles_(triangles) {
     mesh_.flat_m = p.vertices_flat_m;
     mesh_.folded_m = p.vertices_folded_m;
     for (std::size_t e = 0; e < p.edges.size(); ++e) {
@@ -335,9 +337,16 @@ class Cutter {
     }
     for (int j = 0; j < nv; ++j) {
       for (int i = 0; i < nu; ++i) {
-        add_cell({id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]}, face);
+        add_quadrilateral_cell({id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]}, face);
       }
     }
+  }
+
+  // The cell, or with triangles_ four triangles about the mean of its corners.
+  void add_quadrilateral_cell(const std::array<int, 4>& q, int face) {
+    if (!triangles_) return add_cell({q.begin(), q.end()}, face);
+    const int c = combine({{q[0], 0.25}, {q[1], 0.25}, {q[2], 0.25}, {q[3], 0.25}});
+    for (int k = 0; k < 4; ++k) add_cell({q[k], q[(k + 1) % 4], c}, face);
   }
 
   struct Side {
@@ -346,6 +355,7 @@ class Cutter {
   };
 
   const CreasePattern& p_;
+  bool triangles_ = false;
   SegmentMesh mesh_;
   std::map<Key, Side> sides_;
   std::map<Key, int> side_edge_;  // cell side on a pattern edge -> that edge
@@ -359,12 +369,13 @@ std::vector<int> edge_cell_counts(const CreasePattern& p, const Subdivision& s,
   return plan_cut(p, s, source, field, max_cells).n;
 }
 
-double planned_cell_count(const CreasePattern& p, const std::vector<int>& edge_counts) {
+double planned_cell_count(const CreasePattern& p, const std::vector<int>& edge_counts,
+                          bool triangles) {
   double cells = 0;
   const std::vector<std::vector<int>> sides = face_side_edges(p);
   for (const std::vector<int>& f : sides) {
     const double n0 = edge_counts[f[0]];
-    cells += f.size() == 4   ? n0 * edge_counts[f[1]]
+    cells += f.size() == 4   ? (triangles ? 4 : 1) * n0 * edge_counts[f[1]]
              : f.size() == 3 ? n0 * n0
                              : static_cast<double>(f.size()) * n0 * n0;
   }
@@ -372,7 +383,7 @@ double planned_cell_count(const CreasePattern& p, const std::vector<int>& edge_c
 }
 
 SegmentMesh subdivide_pattern(const CreasePattern& p, const Subdivision& s) {
-  Cutter cut(p, plan_cut(p, s, "<api>", "segment_size", 1 << 20));
+  Cutter cut(p, plan_cut(p, s, "<api>", "segment_size", 1 << 20), s.triangles);
   for (std::size_t f = 0; f < p.faces.size(); ++f) cut.cut_face(static_cast<int>(f));
   return cut.finish();
 }

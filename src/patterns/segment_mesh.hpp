@@ -42,6 +42,10 @@ struct Subdivision {
   /// end that lies on another, folded crease (M, V, or F/U with a fold angle), the middle
   /// cell `crease_refinement` times the one at that end; 1: uniform.
   double crease_refinement = 1;
+  /// True: every quadrilateral cell further cut into four triangles about its centre (the mean
+  /// of its corners), which bend without stretching where a grid of rigid quadrilaterals
+  /// cannot (docs/fold.md, "Triangle cells").
+  bool triangles = false;
 };
 
 /// Cells along each pattern edge for `s` (0 for edges of no face); throws InputError naming
@@ -50,8 +54,10 @@ std::vector<int> edge_cell_counts(const CreasePattern& p, const Subdivision& s,
                                   const std::string& source = "<api>",
                                   const std::string& field = "segment_size", int max_cells = 4096);
 
-/// Number of cells subdivide_pattern makes, from the edge counts (memory checks).
-double planned_cell_count(const CreasePattern& p, const std::vector<int>& edge_counts);
+/// Number of cells subdivide_pattern makes, from the edge counts (memory checks); `triangles`
+/// as Subdivision::triangles.
+double planned_cell_count(const CreasePattern& p, const std::vector<int>& edge_counts,
+                          bool triangles = false);
 
 /// Cuts every face of `p` (validated, edge faces derived) as `s` says. Folded
 /// positions of new vertices are interpolated in their face (linear on triangles, bilinear

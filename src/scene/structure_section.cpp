@@ -288,9 +288,9 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   }
   if (root.has("stiffness")) root.fail("stiffness", "not available with a pattern");
   const Fields p(root.node("pattern"), root.context("pattern"),
-                 {"file", "unit", "subdivisions", "segment_size", "crease_refinement", "start",
-                  "crease_law_length", "crease_rest", "mountain_law", "valley_law", "crease_laws",
-                  "soft_seams"});
+                 {"file", "unit", "subdivisions", "segment_size", "crease_refinement", "cells",
+                  "start", "crease_law_length", "crease_rest", "mountain_law", "valley_law",
+                  "crease_laws", "soft_seams"});
   std::filesystem::path path = p.required_word("file");
   if (path.is_relative()) path = std::filesystem::path(root.context().file).parent_path() / path;
   pattern_file = path.string();
@@ -307,6 +307,10 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
     s.segment_size = p.number("segment_size", positive("m"));
   }
   s.crease_refinement = p.number("crease_refinement", 1.0, interval(1, 100, false, false));
+  const std::string cells = p.word("cells", "quadrilaterals");
+  if (cells != "quadrilaterals" && cells != "triangles")
+    p.fail("cells", "'" + cells + "'; allowed: quadrilaterals, triangles");
+  s.triangle_cells = cells == "triangles";
   const std::string start = p.word("start", "folded");
   if (start != "folded" && start != "flat")
     p.fail("start", "'" + start + "'; allowed: folded, flat");
@@ -329,14 +333,11 @@ Model read_pattern_sheet(const Fields& root, const Fields& sheet, const SheetSpe
   if (fix.has("clamp_start")) fix.fail("clamp_start", "not available with a pattern: use panels");
   for (int f : fix.integers("panels", 1, 1000000)) s.fixed_faces.push_back(f - 1);
   {
-    Subdivision cut;
-    cut.n = s.subdivisions;
-    cut.segment_size = s.segment_size;
-    cut.crease_refinement = s.crease_refinement;
     const std::vector<int> counts =
-        edge_cell_counts(pattern, cut, root.context().file, p.field("segment_size"));
+        edge_cell_counts(pattern, subdivision_of(s), root.context().file, p.field("segment_size"));
     const double across = std::max(1, *std::max_element(counts.begin(), counts.end()));
-    check_model_memory(planned_cell_count(pattern, counts) / across, across, root.context().file,
+    check_model_memory(planned_cell_count(pattern, counts, s.triangle_cells) / across, across,
+                       root.context().file,
                        s.segment_size > 0 ? p.field("segment_size") : p.field("subdivisions"));
   }
   Model m;
