@@ -161,8 +161,8 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
 
 // Stowed by reflection (`--reflected F`, docs/folding.md): the pattern's folded form is the
 // stowed wall and reads back (planar faces, the seam closed); the run starts with contact on
-// and no point touching, the pull along the axis; inflated, its chamber closes; bad
-// combinations are refused.
+// and no point touching, the pull along the axis; inflated, its chamber closes, with triangle
+// cells too; bad combinations are refused.
 TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreRefused) {
   TempDir dir;
   auto r = run_finseg(dir,
@@ -189,6 +189,16 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   EXPECT_NE(test::slurp(dir / "ri.yaml").find("damping_time: 0.0001"), std::string::npos);
   r = run_finseg(dir, "inspect ri.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
+  // Triangle cells (--cells triangles): four a face, seams and chamber as before.
+  r = run_finseg(dir,
+                 "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                 "--base open --reflected 0.5 --inflate --cells triangles --out rt.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(test::slurp(dir / "rt.yaml").find("cells: triangles"), std::string::npos);
+  r = run_finseg(dir, "inspect rt.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("bodies 156 (4 fixed)"), std::string::npos) << r.out;
+  expect_refused(dir, "gen cone --cells hexagons --out l.yaml", "--cells");
   for (const char* bad : {"--reflected 0.5", "--top open --base open --reflected 1",
                           "--top open --base open --reflected -0.2",
                           "--top open --base open --reflected 0.5 --gathered 0.5"}) {

@@ -34,6 +34,7 @@ struct SheetOptions {
   double thickness = 1e-4, modulus = 3e9, density = 800, crease_stiffness = 0.05;
   int subdivisions = 2;
   double segment_size = 0, crease_refinement = 1;  // m (0: by subdivisions), ratio
+  std::string cells = "quadrilaterals";            // or triangles (pattern.cells)
   CLI::Option* subdivisions_option = nullptr;
 };
 
@@ -52,6 +53,10 @@ void add_sheet_options(CLI::App* c, SheetOptions& o) {
                 "--subdivisions (docs/fold.md, Segments)");
   c->add_option("--crease-refinement", o.crease_refinement,
                 "segments graded towards the folds: the one at a fold 1/this of the middle one")
+      ->capture_default_str();
+  c->add_option("--cells", o.cells,
+                "quadrilaterals, or triangles: each segment cut into four triangles, which bend "
+                "where quadrilaterals lock (docs/fold.md, Triangle cells)")
       ->capture_default_str();
   c->add_option("--out", o.out, "scene file to write; the pattern goes beside it as .fold")
       ->required();
@@ -76,6 +81,10 @@ void check_sheet(const SheetOptions& o) {
     throw InputError("<cli>", "--crease-refinement",
                      fmt::format("{}; allowed range [1, 100]", o.crease_refinement));
   }
+  if (o.cells != "quadrilaterals" && o.cells != "triangles") {
+    throw InputError("<cli>", "--cells",
+                     fmt::format("'{}'; allowed: quadrilaterals, triangles", o.cells));
+  }
 }
 
 // The pattern section's discretisation lines.
@@ -84,6 +93,7 @@ std::string discretisation_lines(const SheetOptions& o) {
                                      : fmt::format("  subdivisions: {}\n", o.subdivisions);
   if (o.crease_refinement != 1)
     s += fmt::format("  crease_refinement: {:g}\n", o.crease_refinement);
+  if (o.cells != "quadrilaterals") s += fmt::format("  cells: {}\n", o.cells);
   return s;
 }
 
