@@ -460,7 +460,8 @@ void register_cone(CLI::App* gen) {
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
       "--gathered), each band below a ring reflected across the ring's plane, rings zigzagged "
       "to make that exact (open ends only; radially and axially folded, no layers touching); "
-      "the top pulled along the axis");
+      "the top pulled along the axis; with --cells triangles the facets bend where "
+      "quadrilateral segments lock (docs/fold.md, Triangle cells)");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
                gathered, gathered_option, inflate, fold_gather, fold_gather_option,
