@@ -55,7 +55,14 @@ struct TubeResult {
   double closed_form = 0;
 };
 
-TubeResult pressurised_tube(int n) {
+// The tube of n facets under kP, solved statically: closed by fixed end plates with both
+// end rows clamped, or (capped) by caps of its own end corners with the first row clamped.
+struct SolvedTube {
+  Model model;
+  State state;
+};
+
+SolvedTube solved_tube(int n, bool capped) {
   CreasePattern p = tube_crease_pattern(n, kRows, kR, kLength);
   validate_pattern(p, "<tube>");
   PatternSheetSpec spec;
@@ -67,18 +74,24 @@ TubeResult pressurised_tube(int n) {
   const double D = kE * kT * kT * kT / 12;
   const double a = 2 * kR * std::sin(kPi / n);
   spec.mountain_law = std::make_shared<LinearCreaseLaw>(D / a, 2 * kPi / n);
-  for (int j = 0; j < n; ++j)
-    spec.fixed_faces.push_back(j), spec.fixed_faces.push_back((kRows - 1) * n + j);
+  for (int j = 0; j < n; ++j) {
+    spec.fixed_faces.push_back(j);
+    if (!capped) spec.fixed_faces.push_back((kRows - 1) * n + j);
+  }
   Model m = build_pattern_model(p, spec, "<tube>");
   ChamberDef c = test::whole_model_chamber(m, "tube");
   c.prescribed.pressure = kP;
-  std::vector<Vec3> start, end;  // y = 0 seen from -y: corners clockwise in theta
-  for (int j = 0; j < n; ++j) {
-    const double th = 2 * kPi * j / n;
-    end.emplace_back(kR * std::cos(th), kLength, -kR * std::sin(th));
-    start.insert(start.begin(), Vec3(kR * std::cos(th), 0, -kR * std::sin(th)));
+  if (capped) {
+    c.cap_open_ends = true;
+  } else {
+    std::vector<Vec3> start, end;  // y = 0 seen from -y: corners clockwise in theta
+    for (int j = 0; j < n; ++j) {
+      const double th = 2 * kPi * j / n;
+      end.emplace_back(kR * std::cos(th), kLength, -kR * std::sin(th));
+      start.insert(start.begin(), Vec3(kR * std::cos(th), 0, -kR * std::sin(th)));
+    }
+    c.end_plates = {start, end};
   }
-  c.end_plates = {start, end};
   m.chambers.push_back(c);
   validate(m);
   prepare_chambers(m);
@@ -87,6 +100,20 @@ TubeResult pressurised_tube(int n) {
   set.kind = SolverKind::Static;
   const SolverStats st = run_solver(m, s, set, nullptr);
   EXPECT_EQ(st.status, "ok") << st.message;
+  return {std::move(m), std::move(s)};
+}
+
+// The closed form of the header: the N-gon's radial growth, m.
+double polygon_growth(int n) {
+  const double sn = std::sin(kPi / n), cn = std::cos(kPi / n), a = 2 * kR * sn;
+  const double rho = a * cn / (2 * sn);
+  return kP * rho * rho / (kE * kT) + kP * a * a / (4 * kKappaG * kT);
+}
+
+TubeResult pressurised_tube(int n) {
+  const SolvedTube t = solved_tube(n, false);
+  const Model& m = t.model;
+  const State& s = t.state;
   TubeResult r;
   std::vector<double> d;
   for (int j = 0; j < n; ++j) {
@@ -96,10 +123,7 @@ TubeResult pressurised_tube(int n) {
     r.delta += d.back() / n;
   }
   for (double x : d) r.spread = std::max(r.spread, std::abs(x - r.delta));
-
-  const double sn = std::sin(kPi / n), cn = std::cos(kPi / n);
-  const double rho = a * cn / (2 * sn);
-  r.closed_form = kP * rho * rho / (kE * kT) + kP * a * a / (4 * kKappaG * kT);
+  r.closed_form = polygon_growth(n);
   return r;
 }
 
@@ -128,6 +152,41 @@ void check_tube(const std::vector<int>& facets) {
 
 TEST(GasTube, PressurisedTubeGrowsAsMembraneTheorySays) {
   check_tube({8, 16, 32, 48, 64});
+}
+
+// Ends closed by caps of the tube's own end corners (ChamberDef::cap_open_ends) instead of
+// fixed plates: the enclosed volume is the N-gon's area times the length (to round-off), and
+// the caps' load p A goes into the wall, an axial stress p rho / (2 t) (rho the apothem; the
+// closed-ended tube's p R / (2 t)): rows in the middle move apart by the strain
+// p rho / (2 E t) (nu = 0), while the radial growth stays the open tube's.
+TEST(GasTube, CappedTubeCarriesItsEndLoadAxially) {
+  const int n = 16;
+  const SolvedTube t = solved_tube(n, true);
+  const double sn = std::sin(kPi / n), cn = std::cos(kPi / n), a = 2 * kR * sn;
+  const double rho = a * cn / (2 * sn), area = n * a * rho / 2;
+  EXPECT_NEAR(t.model.chambers[0].initial_volume / (area * kLength), 1, 1e-12);
+  const auto row_y = [&](const auto& pos, int r) {
+    double y = 0;
+    for (int j = 0; j < n; ++j) y += pos(r * n + j).y() / n;
+    return y;
+  };
+  const auto now = [&](int b) { return t.state.p_W[b]; };
+  const auto then = [&](int b) { return t.model.bodies[b].p0_W; };
+  const int r1 = kRows / 4, r2 = 3 * kRows / 4;
+  const double strain = (row_y(now, r2) - row_y(now, r1)) / (row_y(then, r2) - row_y(then, r1)) - 1;
+  EXPECT_NEAR(strain / (kP * rho / (2 * kE * kT)), 1, 1e-4);
+  double delta = 0;
+  for (int j = 0; j < n; ++j) {
+    const auto radius = [](const Vec3& x) { return std::hypot(x.x(), x.z()); };
+    const int b = (kRows / 2) * n + j;
+    delta += (radius(now(b)) - radius(then(b))) / n;
+  }
+  EXPECT_NEAR(delta / polygon_growth(n), 1, 5e-4);
+  std::printf(
+      "capped N = %d: volume %.12e m^3 (A L %.12e), axial strain %+.3e of p rho/(2 E t), "
+      "radial growth %+.3e of the closed form\n",
+      n, t.model.chambers[0].initial_volume, area * kLength,
+      strain / (kP * rho / (2 * kE * kT)) - 1, delta / polygon_growth(n) - 1);
 }
 
 // The sanitizer build runs this one instead (scripts/test.sh).

@@ -79,6 +79,51 @@ struct HalfEdge {
   int loop, from, to;  ///< vertex indices
 };
 
+// The open boundaries of the face loops: chains of the edges no other loop's edge meets
+// (by node), each as the `from` vertices of its edges in order. Throws where two open edges
+// leave one node (a boundary touching itself).
+// Only the first `face_loops` loops (the faces) may be open; every loop may meet them.
+std::vector<std::vector<int>> open_boundaries(const std::vector<std::vector<int>>& loops,
+                                              std::size_t face_loops, const std::vector<int>& node,
+                                              const std::string& source, const std::string& field) {
+  std::map<std::pair<int, int>, int> count;
+  for (const auto& loop : loops) {
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      ++count[{node[loop[k]], node[loop[(k + 1) % loop.size()]]}];
+    }
+  }
+  std::map<int, std::pair<int, int>> open_from;  // node -> (from vertex, next node)
+  for (std::size_t l = 0; l < face_loops; ++l) {
+    const std::vector<int>& loop = loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      if (count.count({node[b], node[a]})) continue;
+      if (!open_from.emplace(node[a], std::make_pair(a, node[b])).second) {
+        throw InputError(source, field,
+                         "cap_open_ends: the faces' open boundary touches itself at a corner; "
+                         "each open end must be a simple loop of edges");
+      }
+    }
+  }
+  std::vector<std::vector<int>> out;
+  std::map<int, bool> used;
+  for (const auto& [start, first] : open_from) {
+    if (used[start]) continue;
+    std::vector<int> chain;
+    for (int n = start; !used[n];) {
+      used[n] = true;
+      const auto it = open_from.find(n);
+      if (it == open_from.end()) {
+        throw InputError(source, field, "cap_open_ends: an open boundary does not close");
+      }
+      chain.push_back(it->second.first);
+      n = it->second.second;
+    }
+    out.push_back(chain);
+  }
+  return out;
+}
+
 }  // namespace
 
 void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
@@ -109,7 +154,23 @@ void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
   split_plate_edges(v, loops, def.faces.size(), face_corners, tol);
   std::vector<Vec3> x0(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) x0[i] = v[i].x;
-  const std::vector<int> node = cluster(x0, tol);
+  std::vector<int> node = cluster(x0, tol);
+  // Caps: each open boundary run backwards, by copies of its corners (moving with them).
+  std::vector<std::pair<int, Vec3>> cap_corners_B;  // vertex, its point in the body frame
+  if (def.cap_open_ends) {
+    for (const std::vector<int>& chain :
+         open_boundaries(loops, def.faces.size(), node, model.source, field + ".cap_open_ends")) {
+      std::vector<int> cap;
+      for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        cap.push_back(static_cast<int>(v.size()));
+        cap_corners_B.push_back({cap.back(), corners_B[*it]});
+        v.push_back(v[*it]);
+        x0.push_back(x0[*it]);
+      }
+      loops.push_back(cap);
+    }
+    node = cluster(x0, tol);
+  }
   // Each edge u -> v must meet exactly one edge v' -> u' of another loop.
   std::vector<HalfEdge> edges;
   std::map<std::pair<int, int>, std::vector<int>> by_nodes;
@@ -128,10 +189,12 @@ void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
     if (it == by_nodes.end() || it->second.size() != 1 ||
         by_nodes[{node[h.from], node[h.to]}].size() != 1) {
       const bool plate = h.loop >= static_cast<int>(def.faces.size());
+      const bool cap = h.loop >= static_cast<int>(def.faces.size() + def.end_plates.size());
       throw InputError(
           model.source,
-          plate ? fmt::format("{}.end_plates[{}]", field, h.loop - def.faces.size())
-                : fmt::format("{}.faces[{}]", field, h.loop),
+          cap     ? field + ".cap_open_ends"
+          : plate ? fmt::format("{}.end_plates[{}]", field, h.loop - def.faces.size())
+                  : fmt::format("{}.faces[{}]", field, h.loop),
           fmt::format("its edge from ({:.6g}, {:.6g}, {:.6g}) to ({:.6g}, {:.6g}, {:.6g}) m does "
                       "not meet exactly one edge of another face end to end (a corner inside "
                       "another face's edge, or more than two faces on one edge): a chamber's "
@@ -158,6 +221,7 @@ void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
     if (patch.size() >= 3) bridges.push_back(patch);
   }
   for (std::size_t i = 0; i < face_corners; ++i) v[i].x = corners_B[i];
+  for (const auto& [i, c_B] : cap_corners_B) v[i].x = c_B;
   def.vertices = v;
   def.loops = loops;
   def.loops.insert(def.loops.end(), bridges.begin(), bridges.end());

@@ -51,6 +51,10 @@ struct ChamberDef {
   /// Fixed planar polygons closing the surface (a base, a nozzle): world vertices in m,
   /// counter-clockwise seen from outside the chamber.
   std::vector<std::vector<Vec3>> end_plates;
+  /// True: every loop of face edges that no other face or plate meets is closed by a cap, a
+  /// polygon of those faces' own corners that moves with them (an end closed by the wall
+  /// itself, of no stiffness: its pressure load goes to the corners).
+  bool cap_open_ends = false;
   GasModel gas = GasModel::Prescribed;
   PressureDef prescribed;        ///< Prescribed: the pressure value or table (bodies unused)
   double gas_constant = 287.05;  ///< J/(kg K), specific gas constant (air)

@@ -125,8 +125,8 @@ void read_chambers(const Fields& root, Model& m) {
   const auto items = sequence(root.node("chambers"), root.context("chambers"), "chambers");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Fields f(items[i], {root.context().file, item_field("chambers", i)},
-                   {"name", "faces", "end_plates", "gas", "pressure", "table", "gas_constant",
-                    "gamma", "temperature", "initial_pressure", "inflow", "vents"});
+                   {"name", "faces", "end_plates", "cap_open_ends", "gas", "pressure", "table",
+                    "gas_constant", "gamma", "temperature", "initial_pressure", "inflow", "vents"});
     ChamberDef c;
     c.name = f.word("name", fmt::format("chamber{}", i + 1));
     for (const ChamberDef& other : m.chambers) {
@@ -134,6 +134,7 @@ void read_chambers(const Fields& root, Model& m) {
     }
     c.faces = read_faces(f, m);
     c.end_plates = read_plates(f);
+    c.cap_open_ends = f.flag("cap_open_ends", false);
     read_gas(f, c);
     m.chambers.push_back(c);
   }

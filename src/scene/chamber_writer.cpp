@@ -73,6 +73,7 @@ std::string chambers_section(const Model& m) {
         corners += (k ? ", " : "") + yaml_vector(plate[k]);
       out += fmt::format("      - [{}]\n", corners);
     }
+    if (c.cap_open_ends) out += "    cap_open_ends: true\n";
     out += gas(c);
   }
   return out;
