@@ -81,8 +81,8 @@ struct HalfEdge {
 
 // The open boundaries of the face loops: chains of the edges no other loop's edge meets
 // (by node), each as the `from` vertices of its edges in order. Throws where two open edges
-// leave one node (a boundary touching itself).
-// Only the first `face_loops` loops (the faces) may be open; every loop may meet them.
+// leave one node (a boundary touching itself). Only the first `face_loops` loops (the faces)
+// may be open; every loop may meet them.
 std::vector<std::vector<int>> open_boundaries(const std::vector<std::vector<int>>& loops,
                                               std::size_t face_loops, const std::vector<int>& node,
                                               const std::string& source, const std::string& field) {
@@ -166,10 +166,10 @@ void build_chamber_surface(const Model& model, ChamberDef& def, double tol,
         cap_corners_B.push_back({cap.back(), corners_B[*it]});
         v.push_back(v[*it]);
         x0.push_back(x0[*it]);
+        node.push_back(node[*it]);  // a copy of the corner: its node, no new clustering
       }
       loops.push_back(cap);
     }
-    node = cluster(x0, tol);
   }
   // Each edge u -> v must meet exactly one edge v' -> u' of another loop.
   std::vector<HalfEdge> edges;
