@@ -93,8 +93,9 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   r = run_finseg(dir, "inspect st.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
-  // Gathered (open ends only), pulled or inflated: the scenes read back (the chamber closes).
-  for (const char* extra : {"", " --inflate"}) {
+  // Gathered (open ends only), pulled or inflated: the scenes read back (the chamber closes,
+  // by fixed end plates or by caps).
+  for (const char* extra : {"", " --inflate", " --inflate --caps"}) {
     r = run_finseg(dir,
                    std::string("gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
                                "--base open --gathered 0.8 --out ga.yaml") +
@@ -104,6 +105,24 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
   }
+  // With caps the chamber is the gathered wall closed at its own end rings: no plates, and
+  // less air in it than in the deployed frustum (the generated inflator's volume).
+  const std::string capped = test::slurp(dir / "ga.yaml");
+  EXPECT_NE(capped.find("cap_open_ends: true"), std::string::npos) << capped;
+  EXPECT_EQ(capped.find("end_plates"), std::string::npos) << capped;
+  r = run_finseg(dir,
+                 "run ga.yaml --out gc --set solver.t_end=0.001 --set outputs.vtk=false "
+                 "--set outputs.html=false --set outputs.plot=false");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string gas = test::slurp(dir / "gc/chamber_cone.csv");
+  const auto first = gas.find('\n') + 1;  // t = 0: t, pressure, volume, ...
+  const double volume = std::stod(gas.substr(gas.find(',', gas.find(',', first) + 1) + 1));
+  const auto frustum = capped.find("kg: the deployed volume, ");
+  ASSERT_NE(frustum, std::string::npos) << capped;
+  EXPECT_GT(volume, 0);
+  EXPECT_LT(volume, std::stod(capped.substr(frustum + 25)));
+  expect_refused(dir, "gen cone --top open --base open --gathered 0.5 --caps --out l.yaml",
+                 "--caps");
   for (const char* bad : {"--gathered 0.5", "--top open --base open --gathered 1",
                           "--top open --base open "
                           "--gathered -0.1",

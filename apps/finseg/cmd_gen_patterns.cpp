@@ -282,14 +282,15 @@ std::string top_pull_sections(const Vec2& at, const std::string& direction, doub
 }
 
 // The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
-// where the rings start), filled from vacuum by an inflator with the air that fills the
-// deployed faceted frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both
-// ends), and bled by a vent to space (docs/gas.md). `start` says where the wall starts;
-// `contact_force` (N) sets the contact stiffness as for the pull; `damping_time` (s) the
-// material's damping (0: none).
+// where the rings start) or, with `caps`, by caps of the end rings' own corners that move with
+// the wall; filled from vacuum by an inflator with the air that fills the deployed faceted
+// frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both ends), and bled by a
+// vent to space (docs/gas.md). `start` says where the wall starts; `contact_force` (N) sets the
+// contact stiffness as for the pull; `damping_time` (s) the material's damping (0: none).
 void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
                          const std::string& start, const std::string& title, int clamped,
-                         const std::string& clamped_is, double contact_force, double damping_time) {
+                         const std::string& clamped_is, double contact_force, double damping_time,
+                         bool caps) {
   const int G = 2 * s.pleats;
   const double polygon = 0.5 * G * std::sin(2 * kPi / G),
                A_base = polygon * s.base_radius * s.base_radius,
@@ -303,9 +304,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
       "axial folds,\n"
       "# {},\n"
-      "# inflated: the wall and two fixed end plates (triangles from each end ring's centre,\n"
-      "# where the rings start) are one chamber of adiabatic air filled from vacuum by an\n"
-      "# inflator and bled by a vent to space (docs/gas.md).\n"
+      "{}"
       "{}"
       "# Run: finseg run {} --out inflated\n"
       "title: {}\n{}"
@@ -317,7 +316,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "  - name: cone\n"
       "    faces:\n"
       "      - {{bodies: all, outward: {}}}\n"
-      "    end_plates:\n{}{}"
+      "{}"
       "    gas: adiabatic\n"
       "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
       "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
@@ -330,13 +329,21 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
       "outputs: {{vtk: true, html: true, plot: true}}\n",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, start,
+      caps ? "# inflated: the wall, its end rings closed by caps of their own corners that move "
+             "with\n# it, is one chamber of adiabatic air filled from vacuum by an inflator and "
+             "bled by a\n# vent to space (docs/gas.md, \"Caps\").\n"
+           : "# inflated: the wall and two fixed end plates (triangles from each end ring's "
+             "centre,\n# where the rings start) are one chamber of adiabatic air filled from "
+             "vacuum by an\n# inflator and bled by a vent to space (docs/gas.md).\n",
       damping_time > 0 ? "# material.damping_time: without it the facets' ringing holds the "
                          "implicit steps at\n# 1e-8 to 1e-6 s once layers meet (docs/gas.md).\n"
                        : "",
       scene_name, title, sheet_sections(o, fold_file, damping_time), clamped + 1, clamped_is,
-      contact_force, contact_stiffness, "+z", end_plates(s, p.vertices_folded_m, 0, true),
-      end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false), air_kg, volume, peak_flow,
-      peak_flow);
+      contact_force, contact_stiffness, "+z",
+      caps ? std::string("    cap_open_ends: true   # the end rings closed by caps\n")
+           : "    end_plates:\n" + end_plates(s, p.vertices_folded_m, 0, true) +
+                 end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false),
+      air_kg, volume, peak_flow, peak_flow);
   write_pair(o, p, gas_yaml);
 }
 
@@ -344,8 +351,8 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
 // coordinates are the stowed wall, radially gathered and axially reflected at once; one face
 // of the base band is clamped and the top band's facet across the axis from it is pulled
 // along the axis until it stands as high above the clamped face as on the deployed cone.
-void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p,
-                          bool inflate) {
+void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p, bool inflate,
+                          bool caps) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
   p.vertices_folded_m = cone_reflected(s, p);
   const int clamped = cone_face(s, s.axial_folds, 1), pulled = cone_face(s, 0, s.pleats + 1);
@@ -360,7 +367,7 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
                                     "below a ring reflected across it; no layers touching)",
                                     s.reflect_gather),
                         "cone stowed by reflection, inflated", clamped, "one face of the base band",
-                        most_force, 1e-4);
+                        most_force, 1e-4, caps);
     return;
   }
   const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
@@ -440,6 +447,10 @@ void register_cone(CLI::App* gen) {
       "--inflate", *inflate,
       "with --gathered or --reflected: deploy by gas instead of the pull (one chamber of the wall "
       "closed by fixed end plates, an inflator and a vent to space; docs/gas.md)");
+  auto caps = std::make_shared<bool>(false);
+  c->add_flag("--caps", *caps,
+              "with --inflate: close the chamber by caps of the end rings' own corners, moving "
+              "with the wall, instead of fixed end plates (docs/gas.md, Caps)");
   CLI::Option* gathered_option = c->add_option(
       "--gathered", *gathered,
       "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
@@ -464,7 +475,7 @@ void register_cone(CLI::App* gen) {
       "quadrilateral segments lock (docs/fold.md, Triangle cells)");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
-               gathered, gathered_option, inflate, fold_gather, fold_gather_option,
+               gathered, gathered_option, inflate, caps, fold_gather, fold_gather_option,
                reflected_option] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
@@ -473,6 +484,7 @@ void register_cone(CLI::App* gen) {
     if (*fold_steps < 0 || *fold_steps > 100000) {
       throw InputError("<cli>", "--fold-steps", fmt::format("{}; allowed 0..100000", *fold_steps));
     }
+    if (*caps && !*inflate) throw InputError("<cli>", "--caps", "needs --inflate");
     s->top_disc = disc_end(ends->first, "--top");
     s->base_disc = disc_end(ends->second, "--base");
     s->pleat_fold_angle = angles->first * kDegToRad;
@@ -494,7 +506,7 @@ void register_cone(CLI::App* gen) {
       CreasePattern p;
       in_scene_file(
           "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-      write_reflected_cone(*o, *s, p, *inflate);
+      write_reflected_cone(*o, *s, p, *inflate, *caps);
       return;
     }
     const bool from_stack = stowed_option->count() > 0;
@@ -670,7 +682,7 @@ void register_cone(CLI::App* gen) {
                                     "(no facets coincide)",
                                     *gathered),
                         "gathered cone inflated", clamped, "one face of the top band", most_force,
-                        0.0);
+                        0.0, *caps);
   });
 }
 
