@@ -2,7 +2,9 @@
 // (a fold's checkpoint, say): compute_forces without and with the Jacobian, each part alone
 // (force elements, plate cells, membrane cells, contact) and the Jacobian's conversion to
 // compressed columns, as means over repeated evaluations on one thread, with the Jacobian
-// scratch kept between evaluations as the implicit solver keeps it. Prints a table (ms).
+// scratch kept between evaluations as the implicit solver keeps it; then what backward
+// Euler's Newton does with it: the iteration matrix (forces and Jacobian included) and the
+// symmetric part a factorization is given. Prints a table (ms).
 // Usage: bench_force_evaluation SCENE [STATE] [--repeat N]   (default N = 10)
 #include <fmt/format.h>
 
@@ -13,6 +15,7 @@
 #include <vector>
 
 #include "collision/contact_forces.hpp"
+#include "core/allocator.hpp"
 #include "core/threads.hpp"
 #include "elements/assemble.hpp"
 #include "elements/assembler.hpp"
@@ -21,6 +24,9 @@
 #include "elements/plate_cells.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/implicit_newton.hpp"
+#include "solvers/linear_solve.hpp"
 
 namespace {
 
@@ -53,6 +59,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   set_thread_count(1);
+  keep_freed_memory();  // as finseg runs: large matrices reused from the heap, not faulted in
   const Scene scene = read_scene(files[0]);
   const Model& m = scene.model;
   State state = files.size() == 2 ? read_state_file(files[1], m).state : initial_state(m);
@@ -85,5 +92,20 @@ int main(int argc, char** argv) {
   compute_forces(m, state, f, &jac);
   fmt::print("{:<22} {:>10} {:>14.2f}\n", "to compressed columns", "-",
              mean_ms(repeat, [&] { jac.dq_blocks.to_sparse(m.num_dofs, jac.dq); }));
+  // Backward Euler's Newton at a step of 1 ms from this state (v1 guessed as v0).
+  const double h = 1e-3;
+  AffineStep map{Eigen::VectorXd::Zero(m.num_dofs), velocity_vector(m, state), h, 1};
+  NewtonResidual res{momentum(m, state), h, false};
+  const Eigen::VectorXd x = map.v0;
+  State at = state;
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> A;
+  fmt::print("{:<22} {:>10} {:>14.2f}\n", "Newton matrix", "-",
+             mean_ms(repeat, [&] { newton_linearisation(m, state, h, map, res, x, at, r, A); }));
+  fmt::print("{:<22} {:>10} {:>14.2f}\n", "its symmetric part", "-", mean_ms(repeat, [&] {
+               const Eigen::SparseMatrix<double> At = A.transpose();  // as the solver does
+               if (asymmetry_ratio(A, At) < 0) std::abort();
+               if (!SymmetricMatrix::symmetric_part_of(A, At).finite()) std::abort();
+             }));
   return 0;
 }

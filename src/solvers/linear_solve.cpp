@@ -582,7 +582,8 @@ CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b
 struct KeptFactorization::Impl {
   PatternCache<LuSlot> lu;
   PatternCache<SymmetricSlot> symmetric;
-  SpMat A;
+  SpMat A;  // the matrix factored where UMFPACK's solves need it (empty for CHOLMOD's factor)
+  Eigen::Index rows = 0;
   UsedFactor used;
   bool valid = false;
 };
@@ -597,6 +598,7 @@ bool KeptFactorization::factor_and_solve(const SpMat& A, const Eigen::MatrixXd& 
   k.valid = counted([&] {
     return solve_system({k.lu, k.symmetric, false}, A, B, X, nullptr, k.A, k.used);
   });
+  k.rows = A.rows();
   return k.valid;
 }
 
@@ -607,15 +609,16 @@ bool KeptFactorization::factor_and_solve(const SymmetricMatrix& S, const Eigen::
   k.valid = counted([&] {
     return solve_symmetric({k.lu, k.symmetric, false}, S, B, X, nullptr, k.used);
   });
-  if (k.valid) k.A = S.matrix();
+  k.rows = S.size();
+  k.A = k.valid && k.used.umfpack != nullptr ? S.matrix() : SpMat();
   return k.valid;
 }
 
 bool KeptFactorization::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   const Impl& k = *impl_;
-  if (!k.valid || b.size() != k.A.rows() || !b.allFinite()) return false;
+  if (!k.valid || b.size() != k.rows || !b.allFinite()) return false;
   return counted([&] {
-    if (k.A.rows() == 0) {
+    if (k.rows == 0) {
       x.resize(0);
       return true;
     }

@@ -49,6 +49,8 @@ nlohmann::json linear_json(const LinearSolveCounters& c) {
           {"analyses", c.analyses},
           {"factorizations", c.factorizations},
           {"lu_factorizations", c.lu_factorizations},
+          {"indefinite", c.indefinite},
+          {"refinements", c.refinements},
           {"analyse_s", c.analyse_s},
           {"factor_s", c.factor_s},
           {"total_s", c.total_s}};
