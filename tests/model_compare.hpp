@@ -77,7 +77,7 @@ inline void expect_same_model(const Model& a, const Model& b) {
     EXPECT_EQ(a.probes[i].kind, b.probes[i].kind);
     EXPECT_EQ(a.probes[i].body, b.probes[i].body);
     EXPECT_EQ(a.probes[i].point_B, b.probes[i].point_B);
-    EXPECT_EQ(a.probes[i].drive, b.probes[i].drive);
+    EXPECT_EQ(a.probes[i].drives, b.probes[i].drives);
   }
   EXPECT_EQ(a.gravity_W, b.gravity_W);
   EXPECT_EQ(a.contact.enabled, b.contact.enabled);

@@ -316,9 +316,9 @@ TEST(CreaseStatic, SettleDoesNotOpenTheCrease) {
 TEST(CreaseStatic, CreaseElementAndPoseProbesMatchTheStatics) {
   const double a = kPanel, k = kCreaseK, psi0 = kPsi0;
   Model m = two_panel_model();
-  m.probes = {{"fold", ProbeKind::Crease, -1, Vec3::Zero(), -1, false, 0, -1},
-              {"joint", ProbeKind::Element, -1, Vec3::Zero(), -1, false, -1, 1},
-              {"panel2", ProbeKind::Pose, 2, Vec3::Zero(), -1, false, -1, -1}};
+  m.probes = {{"fold", ProbeKind::Crease, -1, Vec3::Zero(), {}, false, 0, -1},
+              {"joint", ProbeKind::Element, -1, Vec3::Zero(), {}, false, -1, 1},
+              {"panel2", ProbeKind::Pose, 2, Vec3::Zero(), {}, false, -1, -1}};
   State st = initial_state(m);
   SolverSettings set;
   set.kind = SolverKind::Static;
@@ -373,7 +373,7 @@ TEST(PoseProbe, QuaternionAndRotationVectorOfAGeneralRotation) {
   const double angle = 2.5;  // rad, beyond pi/2 so that the sign convention matters
   m.bodies[0].R0_WB = so3_exp<double>(Vec3(angle * axis));
   m.bodies[0].p0_W = Vec3(0.1, 0.2, 0.3);
-  m.probes = {{"pose", ProbeKind::Pose, 0, Vec3::Zero(), -1, false, -1, -1}};
+  m.probes = {{"pose", ProbeKind::Pose, 0, Vec3::Zero(), {}, false, -1, -1}};
   m.finalize_dofs();
   RunRecorder rec(m, SolverSettings{}, {});
   rec.record(initial_state(m), BodyForces{});

@@ -131,7 +131,7 @@ outputs: {vtk: false, html: false, plot: false, phases: false}
   // at x = 0.1, so it hangs 0.05 m below the crease line.
   EXPECT_NEAR((m.drives[0].start_W - Vec3(0.1, 0.02, -0.05)).norm(), 0, 1e-12);
   ASSERT_EQ(m.probes.size(), 5u);
-  EXPECT_EQ(m.probes[1].drive, 0);
+  EXPECT_EQ(m.probes[1].drives, std::vector<int>{0});
   EXPECT_EQ(m.gravity_W, Vec3(0, 0, -9.81));
   EXPECT_FALSE(s.outputs.phases.enabled);
 }

@@ -24,8 +24,11 @@ std::string probe_target(const Model& m, const ProbeDef& p) {
   switch (p.kind) {
     case ProbeKind::Point:
       return "point on " + m.bodies[p.body].name;
-    case ProbeKind::Drive:
-      return "drive " + m.drives[p.drive].name;
+    case ProbeKind::Drive: {
+      std::string names;
+      for (const int d : p.drives) names += (names.empty() ? "" : " + ") + m.drives[d].name;
+      return (p.drives.size() > 1 ? "drives " : "drive ") + names;
+    }
     case ProbeKind::Crease:
       return fmt::format("crease {}", p.crease + 1);
     case ProbeKind::Element:

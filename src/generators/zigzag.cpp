@@ -177,9 +177,9 @@ void add_zigzag_rig(Model& m, const ZigzagSpec& s) {
   d.speed = d.travel;  // dynamic solvers: the whole travel in 1 s unless changed
   d.deployed_at = zigzag_deployed_travel(s);
   m.drives.push_back(d);
-  m.probes.push_back({"gauge", ProbeKind::Drive, -1, Vec3::Zero(), 0});
-  m.probes.push_back({"reaction", ProbeKind::Reaction, -1, Vec3::Zero(), -1});
-  m.probes.push_back({"energy", ProbeKind::Energy, -1, Vec3::Zero(), -1});
+  m.probes.push_back({"gauge", ProbeKind::Drive, -1, Vec3::Zero(), {0}});  // drive 0
+  m.probes.push_back({"reaction", ProbeKind::Reaction, -1, Vec3::Zero(), {}});
+  m.probes.push_back({"energy", ProbeKind::Energy, -1, Vec3::Zero(), {}});
   validate(m);
 }
 

@@ -91,10 +91,11 @@ struct ProbeDef {
   ProbeKind kind = ProbeKind::Point;
   int body = -1;                ///< Point: body carrying the point; Pose: the body
   Vec3 point_B = Vec3::Zero();  ///< Point: position in the body frame
-  int drive = -1;               ///< Drive: which drive's gauge
-  bool pairs = false;           ///< Contact: also record each touching pair's forces
-  int crease = -1;              ///< Crease: index into Model::creases
-  int element = -1;             ///< Element: index into Model::elements
+  /// Drive: the drives whose gauges it records; several (moving alike) are summed.
+  std::vector<int> drives;
+  bool pairs = false;  ///< Contact: also record each touching pair's forces
+  int crease = -1;     ///< Crease: index into Model::creases
+  int element = -1;    ///< Element: index into Model::elements
 };
 
 /// Description of the flat sheet a model was cut from (used by writers and probes).

@@ -148,11 +148,19 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
       return {x, r.x(), r.y(), r.z()};
     }
     case ProbeKind::Drive: {
-      const DriveDef& d = model_.drives[p.drive];
-      const Vec3 F = drive_force(model_, s, p.drive);
-      const Vec3 r = s.p_W[d.body] + s.R_WB[d.body] * d.point_B;
+      // Several gauges (moving alike): their forces summed, their points' mean.
+      Vec3 F = Vec3::Zero(), r = Vec3::Zero();
+      double along = 0;
+      for (const int k : p.drives) {
+        const DriveDef& d = model_.drives[k];
+        const Vec3 F_k = drive_force(model_, s, k);
+        F += F_k;
+        along += F_k.dot(d.direction_W);
+        r += s.p_W[d.body] + s.R_WB[d.body] * d.point_B;
+      }
+      r /= static_cast<double>(p.drives.size());
       std::vector<double> v{
-          s.drive_s[p.drive], F.dot(d.direction_W), F.x(), F.y(), F.z(), r.x(), r.y(), r.z()};
+          s.drive_s[p.drives[0]], along, F.x(), F.y(), F.z(), r.x(), r.y(), r.z()};
       if (abscissa_ != "pull_displacement_m") v.push_back(x);
       return v;
     }

@@ -1,6 +1,7 @@
 // Fixtures by body name, loads, drives and probes of a scene file (docs/scene.md).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "core/text.hpp"
@@ -165,13 +166,46 @@ void read_target(const Fields& f, const Model& m, ProbeDef& p) {
   }
 }
 
+// A drive probe's drives: `drive: name`, or `drives: [names]` whose gauges move alike (the same
+// speed and travel: one pull displacement) and are summed.
+std::vector<int> probed_drives(const Fields& f, const Model& m) {
+  if (f.has("drive") == f.has("drives")) {
+    f.fail(f.has("drive") ? "drives" : "drive", "give either drive: <name> or drives: [<names>]");
+  }
+  const std::string key = f.has("drive") ? "drive" : "drives";
+  const std::vector<std::string> names =
+      key == "drive" ? std::vector<std::string>{f.required_word("drive")} : f.words("drives");
+  if (names.empty()) f.fail(key, "names no drive");
+  std::vector<int> drives;
+  for (const std::string& name : names) {
+    int found = -1;
+    for (std::size_t d = 0; d < m.drives.size(); ++d) {
+      if (m.drives[d].name == name) found = static_cast<int>(d);
+    }
+    if (found < 0) f.fail(key, quoted(name) + " is not a drive of the scene");
+    if (std::find(drives.begin(), drives.end(), found) != drives.end()) {
+      f.fail(key, quoted(name) + " is named twice");
+    }
+    const DriveDef &d = m.drives[found], &first = m.drives[drives.empty() ? found : drives[0]];
+    if (d.speed != first.speed || d.travel != first.travel) {
+      f.fail(key, fmt::format("{} moves {} m at {} m/s, {} {} m at {} m/s; the drives of one "
+                              "probe must move alike (the same speed and travel)",
+                              quoted(name), d.travel, d.speed, quoted(first.name), first.travel,
+                              first.speed));
+    }
+    drives.push_back(found);
+  }
+  return drives;
+}
+
 void read_probes(const Fields& root, Model& m) {
   if (!root.has("probes")) return;  // keep the generator's probes
   m.probes.clear();
   const auto items = sequence(root.node("probes"), root.context("probes"), "probes");
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const Fields f(items[i], {root.context().file, item_field("probes", i)},
-                   {"name", "type", "at", "body", "point", "drive", "pairs", "crease", "element"});
+    const Fields f(
+        items[i], {root.context().file, item_field("probes", i)},
+        {"name", "type", "at", "body", "point", "drive", "drives", "pairs", "crease", "element"});
     ProbeDef p;
     p.name = f.required_word("name");
     if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
@@ -191,11 +225,7 @@ void read_probes(const Fields& root, Model& m) {
       p.body = at.body;
       p.point_B = at.r_B;
     } else if (p.kind == ProbeKind::Drive) {
-      const std::string drive = f.required_word("drive");
-      for (std::size_t d = 0; d < m.drives.size(); ++d) {
-        if (m.drives[d].name == drive) p.drive = static_cast<int>(d);
-      }
-      if (p.drive < 0) f.fail("drive", quoted(drive) + " is not a drive of the scene");
+      p.drives = probed_drives(f, m);
     } else {
       read_target(f, m, p);
     }

@@ -243,8 +243,8 @@ DeploymentPhases run_phases(const Scene& scene, const RunRecorder& rec) {
 
 double deployed_at_of(const Model& m, const ProbeTable& t) {
   for (const ProbeDef& p : m.probes) {
-    if (p.name == t.name && p.kind == ProbeKind::Drive && p.drive >= 0) {
-      return m.drives[p.drive].deployed_at;
+    if (p.name == t.name && p.kind == ProbeKind::Drive && !p.drives.empty()) {
+      return m.drives[p.drives[0]].deployed_at;
     }
   }
   return 0;
