@@ -180,18 +180,26 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
 
 // Stowed by reflection (`--reflected F`, docs/folding.md): the pattern's folded form is the
 // stowed wall and reads back (planar faces, the seam closed); the run starts with contact on
-// and no point touching, the pull along the axis; inflated, its chamber closes, with triangle
-// cells too; bad combinations are refused.
+// and no point touching, its ends pulled apart along the axis (every whole facet of the top
+// band up, of the base band down, nothing clamped, one probe an end); inflated, its chamber
+// closes, with triangle cells too; bad combinations are refused.
 TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreRefused) {
   TempDir dir;
   auto r = run_finseg(dir,
                       "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
                       "--base open --reflected 0.5 --out re.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(test::slurp(dir / "re.yaml").find("direction: [0, 0, 1]"), std::string::npos);
+  const std::string pulled = test::slurp(dir / "re.yaml");
+  EXPECT_NE(pulled.find("{name: top11, at:"), std::string::npos) << pulled;  // 2 x 6 - 1 facets
+  EXPECT_EQ(pulled.find("{name: top12, at:"), std::string::npos) << pulled;
+  EXPECT_NE(pulled.find("{name: base11, at:"), std::string::npos) << pulled;
+  EXPECT_NE(pulled.find("direction: [0, 0, -1]"), std::string::npos) << pulled;
+  EXPECT_NE(pulled.find("{name: top, type: drive, drives: [top1, top2,"), std::string::npos);
+  EXPECT_EQ(pulled.find("fixtures"), std::string::npos) << pulled;
   r = run_finseg(dir, "inspect re.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bodies 39 (0 fixed)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("drives 22, probes 4"), std::string::npos) << r.out;
   r = run_finseg(dir,
                  "run re.yaml --out d --set solver.t_end=0.02 --set outputs.vtk=false "
                  "--set outputs.html=false --set outputs.plot=false");
@@ -199,6 +207,15 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   const std::string contact = test::slurp(dir / "d/contact.csv");
   const auto row = contact.find('\n') + 1;  // t = 0: no active point
   EXPECT_EQ(contact.substr(row, contact.find('\n', row) - row).substr(0, 4), "0,0,") << contact;
+  // Both ends resist being drawn apart (pull_displacement_m, force_N, ...).
+  for (const char* end : {"d/top.csv", "d/base.csv"}) {
+    std::string header;
+    const auto rows = test::csv_rows(test::slurp(dir / end), &header);
+    ASSERT_FALSE(rows.empty()) << end;
+    const double travel = std::stod(pulled.substr(pulled.find("travel: ") + 8));
+    EXPECT_NEAR(rows.back()[0], 0.02 * travel, 1e-9) << end;  // at t = 0.02 s of 1 s
+    EXPECT_GT(rows.back()[1], 0) << end;
+  }
   // Inflated instead (--inflate): the chamber of the wall and its end plates closes.
   r = run_finseg(dir,
                  "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "

@@ -148,14 +148,12 @@ Model cone_model(const std::vector<Vec3>& folded, int n, const ConeSpec& s = lab
 
 // A shipped example scene `m`: contact on, no pair closer than the thickness, no contact
 // point at the start, and the generator's contact stiffness: one face carrying the reference
-// force sinks a quarter of the thickness, F = K (t/4)^1.5, with F the largest pull (stiffness
-// x travel) of the gauge of `pull`, the example's pull scene.
-void expect_example_start(const Model& m, const Model& pull) {
+// force sinks a quarter of the thickness, F = K (t/4)^1.5 (docs/folding.md, "Contact stiffness
+// of the generated scenes").
+void expect_example_start(const Model& m, double force) {
   ASSERT_TRUE(m.contact.enabled);
   EXPECT_GE(least_gap(m).gap, 0);
   EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
-  ASSERT_EQ(pull.drives.size(), 1u);
-  const double force = pull.drives[0].stiffness * pull.drives[0].travel;
   const double t = m.bodies.front().thickness;
   EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * t, 1.5), force, 1e-3 * force);
 }
@@ -200,9 +198,11 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
       }
     }
   }
-  // The shipped example: apart, with the generator's contact stiffness for its own pull.
+  // The shipped example: apart, with the generator's contact stiffness for its pull, the ends
+  // drawn apart by 22 drives: F = 20 N/m x both ends' travel.
   const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/reflected.yaml");
-  expect_example_start(scene.model, scene.model);
+  ASSERT_EQ(scene.model.drives.size(), 22u);
+  expect_example_start(scene.model, 20 * 2 * scene.model.drives[0].travel);
 }
 
 TEST(ConeGathered, TheFanStacksFacetsCoincide) {
@@ -220,7 +220,9 @@ TEST(ConeGathered, ExampleScenesStartApartWithTheRulesContactStiffness) {
     SCOPED_TRACE(file);
     const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
     const Scene pull = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/gathered.yaml");
-    expect_example_start(scene.model, pull.model);
+    // F: the largest pull (stiffness x travel) of the pull scene's one gauge.
+    ASSERT_EQ(pull.model.drives.size(), 1u);
+    expect_example_start(scene.model, pull.model.drives[0].stiffness * pull.model.drives[0].travel);
   }
   // The inflation's chamber closes (read_scene refuses an open one) round the whole wall.
   const Scene gas = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/inflate.yaml");

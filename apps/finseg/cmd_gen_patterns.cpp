@@ -259,26 +259,35 @@ double contact_stiffness_rule(double force, double thickness) {
   return force / std::pow(0.25 * thickness, 1.5);
 }
 
-// The cone scenes' pull, drives to outputs: a gauge of `gauge` N/m at flat point `at` drawn
-// `travel` m along `direction` (a YAML list) in 1 s, the drive, energy and contact probes, the
-// implicit solver.
+// A pull's drive `name` (YAML list item): a gauge of `gauge` N/m at flat point `at` drawn
+// `travel` m along `direction` (a YAML list) in 1 s.
+std::string pull_drive(const std::string& name, const Vec2& at, const std::string& direction,
+                       double gauge, double travel) {
+  return fmt::format(
+      "  - {{name: {}, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
+      "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n",
+      name, at.x(), at.y(), direction, gauge, travel, travel / 100, travel);
+}
+
+// The cone scenes' pull after its drives: `probes` (YAML list items), the energy and contact
+// probes, the implicit solver, the outputs.
+std::string pull_run_sections(const std::string& probes) {
+  return "probes:\n" + probes +
+         "  - {name: energy, type: energy}\n"
+         "  - {name: contact, type: contact}\n"
+         "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
+         "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
+         "# measured\")\n"
+         "solver: {type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
+         "         newton_tolerance: 0.1}\n"
+         "outputs: {vtk: true, html: true, plot: true}\n";
+}
+
+// The cone scenes' pull, drives to outputs: one drive, `top` (pull_drive), and its probe.
 std::string top_pull_sections(const Vec2& at, const std::string& direction, double gauge,
                               double travel) {
-  return fmt::format(
-      "drives:\n"
-      "  - {{name: top, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
-      "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n"
-      "probes:\n"
-      "  - {{name: top, type: drive, drive: top}}\n"
-      "  - {{name: energy, type: energy}}\n"
-      "  - {{name: contact, type: contact}}\n"
-      "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
-      "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
-      "# measured\")\n"
-      "solver: {{type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
-      "         newton_tolerance: 0.1}}\n"
-      "outputs: {{vtk: true, html: true, plot: true}}\n",
-      at.x(), at.y(), direction, gauge, travel, travel / 100, travel);
+  return "drives:\n" + pull_drive("top", at, direction, gauge, travel) +
+         pull_run_sections("  - {name: top, type: drive, drive: top}\n");
 }
 
 // The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
@@ -347,28 +356,53 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
   write_pair(o, p, gas_yaml);
 }
 
+// Mean axial height (z) of the folded centroids of `faces` at coordinates x.
+double mean_height(const std::vector<Vec3>& x, const CreasePattern& p,
+                   const std::vector<int>& faces) {
+  double z = 0;
+  for (const int f : faces) z += folded_centroid(x, p.faces[f]).z();
+  return z / static_cast<double>(faces.size());
+}
+
 // The cone stowed by reflection (`--reflected F`, cone_reflected): the pattern's folded
-// coordinates are the stowed wall, radially gathered and axially reflected at once; one face
-// of the base band is clamped and the top band's facet across the axis from it is pulled
-// along the axis until it stands as high above the clamped face as on the deployed cone.
+// coordinates are the stowed wall, radially gathered and axially reflected at once. Its ends
+// are pulled apart along the axis, nothing clamped: every whole facet of the top band up and
+// of the base band down, each end by half of what the two bands' mean heights lack of their
+// distance on the deployed cone, stiff gauges sharing 10 kN/m an end (one probe an end sums
+// them). (Inflated, one face of the base band is clamped.)
 void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p, bool inflate,
                           bool caps) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
   p.vertices_folded_m = cone_reflected(s, p);
-  const int clamped = cone_face(s, s.axial_folds, 1), pulled = cone_face(s, 0, s.pleats + 1);
-  auto rise = [&](const std::vector<Vec3>& x) {
-    return (folded_centroid(x, p.faces[pulled]) - folded_centroid(x, p.faces[clamped])).z();
+  std::vector<int> top, base;  // the bands' whole facets (wedges 0 and 2 pleats: the seam's halves)
+  for (int w = 1; w < 2 * s.pleats; ++w) {
+    top.push_back(cone_face(s, 0, w));
+    base.push_back(cone_face(s, s.axial_folds, w));
+  }
+  auto apart = [&](const std::vector<Vec3>& x) {
+    return mean_height(x, p, top) - mean_height(x, p, base);
   };
-  const double travel = rise(deployed) - rise(p.vertices_folded_m);
-  const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
+  const double travel = 0.5 * (apart(deployed) - apart(p.vertices_folded_m));
+  const double gauge = 1e4 / static_cast<double>(top.size());
+  // Contact stiffness for a few newtons a facet (docs/folding.md): that of 20 N/m over the
+  // whole travel, as the single-facet pull it replaced had.
+  const double most_force = std::max(20 * 2 * travel, 0.1);
   if (inflate) {
     write_inflated_cone(o, s, p,
                         fmt::format("stowed by reflection ({:g} of the way gathered, each band "
                                     "below a ring reflected across it; no layers touching)",
                                     s.reflect_gather),
-                        "cone stowed by reflection, inflated", clamped, "one face of the base band",
-                        most_force, 1e-4, caps);
+                        "cone stowed by reflection, inflated", base.front(),
+                        "one face of the base band", most_force, 1e-4, caps);
     return;
+  }
+  std::string drives = "drives:\n", top_names, base_names;
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    const std::string t = fmt::format("top{}", k + 1), b = fmt::format("base{}", k + 1);
+    drives += pull_drive(t, face_centroid(p, top[k]), "[0, 0, 1]", gauge, travel) +
+              pull_drive(b, face_centroid(p, base[k]), "[0, 0, -1]", gauge, travel);
+    top_names += (k == 0 ? "" : ", ") + t;
+    base_names += (k == 0 ? "" : ", ") + b;
   }
   const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
@@ -382,19 +416,26 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "folded at once,\n"
       "# every facet rigid, no layers touching; docs/folding.md, \"The cone stowed by "
       "reflection\").\n"
-      "# No rigid motion leads out of it: the pull strains the facets and does not deploy the\n"
-      "# cone in the model (docs/folding.md). Pull the top along the axis:\n"
+      "# No rigid motion leads out of it: the pull strains the facets. Its ends are pulled "
+      "apart\n"
+      "# along the axis, nothing clamped: the top band's whole facets up, the base band's down,\n"
+      "# {:.4g} m each (probes top and base sum each end's gauges); the base band stays "
+      "gathered\n"
+      "# (docs/folding.md). Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
       "#   finseg run {} --out deploy\n"
-      "title: cone stowed by reflection, top pulled along the axis\n{}"
-      "fixtures: {{panels: [{}]}}   # one face of the base band\n"
-      "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
-      "thickness\n"
+      "title: cone stowed by reflection, its ends pulled apart along the axis\n{}"
+      "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
+      "# contact stiffness: {:.3g} N on one face at a quarter of the thickness; no friction:\n"
+      "# with it (mu 0.3) the steps fell to 1e-7 s where layers slid at the bands' snap\n"
+      "# (docs/folding.md)\n"
       "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
-      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
-      "{}",
-      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, scene_name,
-      sheet_sections(o, fold_file), clamped + 1, most_force, contact_stiffness,
-      top_pull_sections(face_centroid(p, pulled), "[0, 0, 1]", gauge, travel));
+      "          friction: {{model: none}}}}\n"
+      "{}{}",
+      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, travel,
+      scene_name, sheet_sections(o, fold_file, 1e-3), most_force, contact_stiffness, drives,
+      pull_run_sections(fmt::format("  - {{name: top, type: drive, drives: [{}]}}\n"
+                                    "  - {{name: base, type: drive, drives: [{}]}}\n",
+                                    top_names, base_names)));
   write_pair(o, p, yaml);
 }
 
@@ -471,7 +512,7 @@ void register_cone(CLI::App* gen) {
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
       "--gathered), each band below a ring reflected across the ring's plane, rings zigzagged "
       "to make that exact (open ends only; radially and axially folded, no layers touching); "
-      "the top pulled along the axis; with --cells triangles the facets bend where "
+      "its ends pulled apart along the axis; with --cells triangles the facets bend where "
       "quadrilateral segments lock (docs/fold.md, Triangle cells)");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
