@@ -3,8 +3,9 @@
 // (force elements, plate cells, membrane cells, contact) and the Jacobian's conversion to
 // compressed columns, as means over repeated evaluations on one thread, with the Jacobian
 // scratch kept between evaluations as the implicit solver keeps it; then what backward
-// Euler's Newton does with it: the iteration matrix (forces and Jacobian included) and the
-// symmetric part a factorization is given. Prints a table (ms).
+// Euler's Newton does with it: the iteration matrix as newton_linearisation returns it (forces,
+// Jacobian and its copy out included, which the solver does not make) and the symmetric part a
+// factorization is given. Prints a table (ms).
 // Usage: bench_force_evaluation SCENE [STATE] [--repeat N]   (default N = 10)
 #include <fmt/format.h>
 

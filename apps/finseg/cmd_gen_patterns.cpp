@@ -487,7 +487,8 @@ void register_cone(CLI::App* gen) {
   c->add_flag(
       "--inflate", *inflate,
       "with --gathered or --reflected: deploy by gas instead of the pull (one chamber of the wall "
-      "closed by fixed end plates, an inflator and a vent to space; docs/gas.md)");
+      "closed by fixed end plates, or by caps with --caps, an inflator and a vent to space; "
+      "docs/gas.md)");
   auto caps = std::make_shared<bool>(false);
   c->add_flag("--caps", *caps,
               "with --inflate: close the chamber by caps of the end rings' own corners, moving "
