@@ -95,8 +95,8 @@ TEST(ElementJacobian, FoldedStripWithMeasuredCreaseLawsAgreesWithAutodiff) {
   }
 }
 
-// The drive's gauge (an isotropic spring and damper from a point off the centroid to the
-// moving target), damped and moving, on the damped plate.
+// The drive's gauge (a spring and damper from a point off the centroid to the moving target,
+// isotropic or softer across its direction), damped and moving, on the damped plate.
 TEST(ElementJacobian, DriveGaugeAgreesWithAutodiff) {
   Model m = build_sheet_model(damped_plate());
   DriveDef d;
@@ -110,12 +110,16 @@ TEST(ElementJacobian, DriveGaugeAgreesWithAutodiff) {
   d.speed = 0.05;
   d.travel = 0.02;
   m.drives.push_back(d);
-  for (const double amplitude : {0.0, 0.05, 0.4}) {
-    State st = initial_state(m);
-    st.drive_s.assign(1, 4e-3);
-    perturb(m, st, amplitude);
-    SCOPED_TRACE(amplitude);
-    expect_closed_form_matches_autodiff(m, st);
+  for (const double lateral : {1.0, 0.3, 0.0}) {
+    m.drives[0].lateral_ratio = lateral;
+    for (const double amplitude : {0.0, 0.05, 0.4}) {
+      State st = initial_state(m);
+      st.drive_s.assign(1, 4e-3);
+      perturb(m, st, amplitude);
+      SCOPED_TRACE(amplitude);
+      SCOPED_TRACE(lateral);
+      expect_closed_form_matches_autodiff(m, st);
+    }
   }
 }
 

@@ -17,29 +17,37 @@ Target target_of(const DriveDef& d, const State& state, int i) {
   return {d.start_W + state.drive_s[i] * d.direction_W, rate * d.direction_W};
 }
 
-// f = -k (x - X) - c (v + w x r - V) at the point x = p + r, its moment r x f about the
+// The gauge's axes: a x along direction_W, lateral_ratio a x across it (a = k or c).
+Mat3 gauge_axes(const DriveDef& d, double along) {
+  const Vec3& n = d.direction_W;
+  return along * (d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * n * n.transpose());
+}
+
+// f = -K (x - X) - C (v + w x r - V) at the point x = p + r, its moment r x f about the
 // centroid. With dx = dp - [r]x dphi and d(w x r) = -[w]x [r]x dphi + ... (world-frame
-// increments): df/dp = -k, df/dphi = k [r]x + c [w]x [r]x, dm = -[f]x dr + [r]x df;
-// df/dv = -c, df/dw = c [r]x.
+// increments): df/dp = -K, df/dphi = K [r]x + C [w]x [r]x, dm = -[f]x dr + [r]x df;
+// df/dv = -C, df/dw = C [r]x.
 Vec3 gauge_force(const DriveDef& d, const Target& tgt, const State& s) {
   const Vec3 r = s.R_WB[d.body] * d.point_B;
   const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
-  return -d.stiffness * (s.p_W[d.body] + r - tgt.x_W) - d.damping * (v_P - tgt.v_W);
+  return -gauge_axes(d, d.stiffness) * (s.p_W[d.body] + r - tgt.x_W) -
+         gauge_axes(d, d.damping) * (v_P - tgt.v_W);
 }
 
 void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assembler& as) {
   const Vec3 r = s.R_WB[d.body] * d.point_B, stretch = s.p_W[d.body] + r - tgt.x_W;
   const Vec3 f = gauge_force(d, tgt, s);
+  const Mat3 K = gauge_axes(d, d.stiffness), C = gauge_axes(d, d.damping);
   as.add(d.body, {f, r.cross(f)});
-  as.add_energy(0.5 * d.stiffness * stretch.squaredNorm());
-  const Mat3 hr = hat(r), I = Mat3::Identity();
-  const Mat3 df_dphi = d.stiffness * hr + d.damping * hat(s.w_W[d.body]) * hr;
+  as.add_energy(0.5 * stretch.dot(K * stretch));
+  const Mat3 hr = hat(r);
+  const Mat3 df_dphi = K * hr + C * hat(s.w_W[d.body]) * hr;
   Mat6 q;
-  q << -d.stiffness * I, df_dphi, -d.stiffness * hr, hat(f) * hr + hr * df_dphi;
+  q << -K, df_dphi, -hr * K, hat(f) * hr + hr * df_dphi;
   as.add_pose_block(d.body, d.body, q);
   if (d.damping == 0) return;
   Mat6 v;
-  v << -d.damping * I, d.damping * hr, -d.damping * hr, d.damping * hr * hr;
+  v << -C, C * hr, -hr * C, hr * C * hr;
   as.add_velocity_block(d.body, d.body, v);
 }
 
@@ -62,10 +70,11 @@ void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
       using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
       const Vec3T<T> P = A.point_W(d.point_B);
       const Vec3T<T> stretch = P - tgt.x_W.cast<T>();
-      const Vec3T<T> f =
-          -d.stiffness * stretch - d.damping * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
+      const Mat3T<T> K = gauge_axes(d, d.stiffness).cast<T>(),
+                     C = gauge_axes(d, d.damping).cast<T>();
+      const Vec3T<T> f = -K * stretch - C * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
       w.add_force_at(f, P, A.p_W);
-      return T(0.5 * d.stiffness) * stretch.squaredNorm();
+      return T(0.5) * stretch.dot(K * stretch);
     });
   }
 }

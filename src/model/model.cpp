@@ -134,6 +134,9 @@ void validate(const Model& m) {
     if (!(d.stiffness > 0) || !std::isfinite(d.stiffness)) {
       throw InputError(m.source, f + ".stiffness", "must be finite and > 0 N/m");
     }
+    if (!(d.lateral_ratio >= 0) || !std::isfinite(d.lateral_ratio)) {
+      throw InputError(m.source, f + ".lateral_stiffness", "must be finite and >= 0 N/m");
+    }
     if (std::abs(d.direction_W.norm() - 1.0) > 1e-9) {
       throw InputError(m.source, f + ".direction", "must be a unit vector");
     }

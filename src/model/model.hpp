@@ -71,11 +71,14 @@ struct DriveDef {
   Vec3 point_B = Vec3::Zero();
   Vec3 start_W = Vec3::Zero();       ///< target at s = 0 (the point's initial position), m
   Vec3 direction_W = Vec3::UnitZ();  ///< unit pull direction
-  double stiffness = 1e3;            ///< gauge stiffness along all three axes, N/m
-  double damping = 0;                ///< gauge damping, N s/m
-  double speed = 0;                  ///< dynamic solvers: ds/dt, m/s
-  double travel = 0;                 ///< total drive displacement, m
-  double step = 0;                   ///< quasi-static solver: displacement increment, m
+  double stiffness = 1e3;            ///< gauge stiffness along direction_W, N/m
+  double damping = 0;                ///< gauge damping along direction_W, N s/m
+  /// Stiffness and damping across direction_W over those along it: 1 an isotropic gauge, 0 a
+  /// long string that pulls along direction_W and lets the point move sideways.
+  double lateral_ratio = 1;
+  double speed = 0;   ///< dynamic solvers: ds/dt, m/s
+  double travel = 0;  ///< total drive displacement, m
+  double step = 0;    ///< quasi-static solver: displacement increment, m
   /// Drive displacement at which the structure is fully deployed (end of the window of the
   /// deployment peak, probes/deployment_peak.hpp), m; 0: not known, the whole travel.
   double deployed_at = 0;
