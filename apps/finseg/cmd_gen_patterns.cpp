@@ -260,26 +260,29 @@ double contact_stiffness_rule(double force, double thickness) {
 }
 
 // A pull's drive `name` (YAML list item): a gauge of `gauge` N/m at flat point `at` drawn
-// `travel` m along `direction` (a YAML list) in 1 s.
+// `travel` m along `direction` (a YAML list) in 1 s; a `string` pulls along it only.
 std::string pull_drive(const std::string& name, const Vec2& at, const std::string& direction,
-                       double gauge, double travel) {
+                       double gauge, double travel, bool string = false) {
   return fmt::format(
-      "  - {{name: {}, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},\n"
+      "  - {{name: {}, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},{}\n"
       "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n",
-      name, at.x(), at.y(), direction, gauge, travel, travel / 100, travel);
+      name, at.x(), at.y(), direction, gauge, string ? " lateral_stiffness: 0," : "", travel,
+      travel / 100, travel);
 }
 
 // The cone scenes' pull after its drives: `probes` (YAML list items), the energy and contact
-// probes, the implicit solver, the outputs.
-std::string pull_run_sections(const std::string& probes) {
+// probes, the implicit solver to `t_end` s, the outputs.
+std::string pull_run_sections(const std::string& probes, double t_end = 1.0) {
   return "probes:\n" + probes +
          "  - {name: energy, type: energy}\n"
          "  - {name: contact, type: contact}\n"
          "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
          "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
-         "# measured\")\n"
-         "solver: {type: implicit, t_end: 1.0, output_interval: 0.01, dt_max: 0.01,\n"
-         "         newton_tolerance: 0.1}\n"
+         "# measured\")\n" +
+         fmt::format(
+             "solver: {{type: implicit, t_end: {:.1f}, output_interval: 0.01, dt_max: "
+             "0.01,\n         newton_tolerance: 0.1}}\n",
+             t_end) +
          "outputs: {vtk: true, html: true, plot: true}\n";
 }
 
@@ -290,22 +293,57 @@ std::string top_pull_sections(const Vec2& at, const std::string& direction, doub
          pull_run_sections("  - {name: top, type: drive, drive: top}\n");
 }
 
-// The wall as one chamber closed by fixed end plates (triangles from each end ring's centre,
-// where the rings start) or, with `caps`, by caps of the end rings' own corners that move with
-// the wall; filled from vacuum by an inflator with the air that fills the deployed faceted
-// frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both ends), and bled by a
-// vent to space (docs/gas.md). `start` says where the wall starts; `contact_force` (N) sets the
-// contact stiffness as for the pull; `damping_time` (s) the material's damping (0: none).
-void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
-                         const std::string& start, const std::string& title, int clamped,
-                         const std::string& clamped_is, double contact_force, double damping_time,
-                         bool caps) {
+// An inflator pulse: from `start` s, `air` times the air that fills the deployed faceted
+// frustum to 1 kPa at 300 K, injected over 60 ms (ramps of 10 ms at both ends).
+struct InflowPulse {
+  double start, air;
+};
+
+// The wall as one chamber (YAML `chambers:` section) closed by fixed end plates (triangles
+// from each end ring's centre, where the rings start) or, with `caps`, by caps of the end
+// rings' own corners that move with the wall; filled from vacuum by the inflator `pulses` and
+// bled by a vent to space (docs/gas.md).
+std::string chamber_section(const ConeSpec& s, const CreasePattern& p, bool caps,
+                            const std::vector<InflowPulse>& pulses) {
   const int G = 2 * s.pleats;
   const double polygon = 0.5 * G * std::sin(2 * kPi / G),
                A_base = polygon * s.base_radius * s.base_radius,
                A_top = polygon * s.top_radius * s.top_radius;
   const double volume = s.height / 3 * (A_base + A_top + std::sqrt(A_base * A_top));
-  const double air_kg = 1e3 * volume / (287.05 * 300), peak_flow = air_kg / 0.05;
+  const double air_kg = 1e3 * volume / (287.05 * 300);
+  std::string at, flow, temperature;
+  for (const InflowPulse& pulse : pulses) {
+    const double t0 = pulse.start, q = pulse.air * air_kg / 0.05;
+    at += fmt::format("{}{:g}, {:g}, {:g}, {:g}", at.empty() ? "" : ", ", t0, t0 + 0.01, t0 + 0.05,
+                      t0 + 0.06);
+    flow += fmt::format("{}0, {:.4g}, {:.4g}, 0", flow.empty() ? "" : ", ", q, q);
+    temperature += std::string(temperature.empty() ? "" : ", ") + "300, 300, 300, 300";
+  }
+  return fmt::format(
+      "chambers:\n"
+      "  - name: cone\n"
+      "    faces:\n"
+      "      - {{bodies: all, outward: +z}}\n"
+      "{}"
+      "    gas: adiabatic\n"
+      "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
+      "    inflow: {{at: [{}], mass_flow: [{}],\n"
+      "             temperature: [{}]}}\n"
+      "    vents:\n"
+      "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n",
+      caps ? std::string("    cap_open_ends: true   # the end rings closed by caps\n")
+           : "    end_plates:\n" + end_plates(s, p.vertices_folded_m, 0, true) +
+                 end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false),
+      air_kg, volume, at, flow, temperature);
+}
+
+// The wall inflated (chamber_section, one pulse): `start` says where the wall starts;
+// `contact_force` (N) sets the contact stiffness as for the pull; `damping_time` (s) the
+// material's damping (0: none).
+void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
+                         const std::string& start, const std::string& title, int clamped,
+                         const std::string& clamped_is, double contact_force, double damping_time,
+                         bool caps) {
   const double contact_stiffness = contact_stiffness_rule(contact_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
@@ -321,17 +359,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
       "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
       "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
-      "chambers:\n"
-      "  - name: cone\n"
-      "    faces:\n"
-      "      - {{bodies: all, outward: {}}}\n"
       "{}"
-      "    gas: adiabatic\n"
-      "    # {:.4g} kg: the deployed volume, {:.4g} m^3, at 1 kPa and 300 K\n"
-      "    inflow: {{at: [0, 0.01, 0.05, 0.06], mass_flow: [0, {:.4g}, {:.4g}, 0],\n"
-      "             temperature: [300, 300, 300, 300]}}\n"
-      "    vents:\n"
-      "      - {{area: 2.0e-6, discharge_coefficient: 0.6}}\n"
       "probes:\n"
       "  - {{name: energy, type: energy}}\n"
       "  - {{name: contact, type: contact}}\n"
@@ -348,11 +376,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
                          "implicit steps at\n# 1e-8 to 1e-6 s once layers meet (docs/gas.md).\n"
                        : "",
       scene_name, title, sheet_sections(o, fold_file, damping_time), clamped + 1, clamped_is,
-      contact_force, contact_stiffness, "+z",
-      caps ? std::string("    cap_open_ends: true   # the end rings closed by caps\n")
-           : "    end_plates:\n" + end_plates(s, p.vertices_folded_m, 0, true) +
-                 end_plates(s, p.vertices_folded_m, s.axial_folds + 1, false),
-      air_kg, volume, peak_flow, peak_flow);
+      contact_force, contact_stiffness, chamber_section(s, p, caps, {{0.0, 1.0}}));
   write_pair(o, p, gas_yaml);
 }
 
@@ -369,9 +393,11 @@ double mean_height(const std::vector<Vec3>& x, const CreasePattern& p,
 // are pulled apart along the axis, nothing clamped: every whole facet of the top band up and
 // of the base band down, each end by half of what the two bands' mean heights lack of their
 // distance on the deployed cone, stiff gauges sharing 10 kN/m an end (one probe an end sums
-// them). (Inflated, one face of the base band is clamped.)
-void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p, bool inflate,
-                          bool caps) {
+// them). Inflated, the gauges are strings (free across the axis) and the wall, closed by caps
+// (fixed plates could not follow its ends), is filled while they draw its ends apart: the
+// deployment air first, twice as much again as the pull ends, and held 0.3 s.
+void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p,
+                          bool inflate) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
   p.vertices_folded_m = cone_reflected(s, p);
   std::vector<int> top, base;  // the bands' whole facets (wedges 0 and 2 pleats: the seam's halves)
@@ -387,20 +413,11 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   // Contact stiffness for a few newtons a facet (docs/folding.md): that of 20 N/m over the
   // whole travel, as the single-facet pull it replaced had.
   const double most_force = std::max(20 * 2 * travel, 0.1);
-  if (inflate) {
-    write_inflated_cone(o, s, p,
-                        fmt::format("stowed by reflection ({:g} of the way gathered, each band "
-                                    "below a ring reflected across it; no layers touching)",
-                                    s.reflect_gather),
-                        "cone stowed by reflection, inflated", base.front(),
-                        "one face of the base band", most_force, 1e-4, caps);
-    return;
-  }
   std::string drives = "drives:\n", top_names, base_names;
   for (std::size_t k = 0; k < top.size(); ++k) {
     const std::string t = fmt::format("top{}", k + 1), b = fmt::format("base{}", k + 1);
-    drives += pull_drive(t, face_centroid(p, top[k]), "[0, 0, 1]", gauge, travel) +
-              pull_drive(b, face_centroid(p, base[k]), "[0, 0, -1]", gauge, travel);
+    drives += pull_drive(t, face_centroid(p, top[k]), "[0, 0, 1]", gauge, travel, inflate) +
+              pull_drive(b, face_centroid(p, base[k]), "[0, 0, -1]", gauge, travel, inflate);
     top_names += (k == 0 ? "" : ", ") + t;
     base_names += (k == 0 ? "" : ", ") + b;
   }
@@ -419,23 +436,31 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "# No rigid motion leads out of it: the pull strains the facets. Its ends are pulled "
       "apart\n"
       "# along the axis, nothing clamped: the top band's whole facets up, the base band's down,\n"
-      "# {:.4g} m each (probes top and base sum each end's gauges); the base band stays "
-      "gathered\n"
+      "# {:.4g} m each (probes top and base sum each end's gauges){}"
       "# (docs/folding.md). Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
       "#   finseg run {} --out deploy\n"
-      "title: cone stowed by reflection, its ends pulled apart along the axis\n{}"
+      "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
       "# contact stiffness: {:.3g} N on one face at a quarter of the thickness; no friction:\n"
       "# with it (mu 0.3) the steps fell to 1e-7 s where layers slid at the bands' snap\n"
       "# (docs/folding.md)\n"
       "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
       "          friction: {{model: none}}}}\n"
-      "{}{}",
+      "{}{}{}",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, travel,
-      scene_name, sheet_sections(o, fold_file, 1e-3), most_force, contact_stiffness, drives,
+      inflate ? ", by strings\n"
+                "# (free across the axis) while gas fills the wall closed by caps of its end "
+                "rings:\n"
+                "# the deployment air, then twice as much again from 0.9 s, held to 1.3 s\n"
+              : "; the base band stays gathered\n",
+      scene_name,
+      inflate ? "inflated while its ends are drawn apart" : "its ends pulled apart along the axis",
+      sheet_sections(o, fold_file, 1e-3), most_force, contact_stiffness, drives,
+      inflate ? chamber_section(s, p, true, {{0.0, 1.0}, {0.9, 2.0}}) : "",
       pull_run_sections(fmt::format("  - {{name: top, type: drive, drives: [{}]}}\n"
                                     "  - {{name: base, type: drive, drives: [{}]}}\n",
-                                    top_names, base_names)));
+                                    top_names, base_names),
+                        inflate ? 1.3 : 1.0));
   write_pair(o, p, yaml);
 }
 
@@ -486,13 +511,14 @@ void register_cone(CLI::App* gen) {
   auto inflate = std::make_shared<bool>(false);
   c->add_flag(
       "--inflate", *inflate,
-      "with --gathered or --reflected: deploy by gas instead of the pull (one chamber of the wall "
-      "closed by fixed end plates, or by caps with --caps, an inflator and a vent to space; "
-      "docs/gas.md)");
+      "with --gathered: deploy by gas instead of the pull (one chamber of the wall closed by "
+      "fixed end plates, or by caps with --caps, an inflator and a vent to space; docs/gas.md); "
+      "with --reflected: by gas in the wall closed by caps while strings draw its ends apart");
   auto caps = std::make_shared<bool>(false);
   c->add_flag("--caps", *caps,
               "with --inflate: close the chamber by caps of the end rings' own corners, moving "
-              "with the wall, instead of fixed end plates (docs/gas.md, Caps)");
+              "with the wall, instead of fixed end plates (docs/gas.md, Caps; --reflected "
+              "always has caps)");
   CLI::Option* gathered_option = c->add_option(
       "--gathered", *gathered,
       "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
@@ -513,7 +539,8 @@ void register_cone(CLI::App* gen) {
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
       "--gathered), each band below a ring reflected across the ring's plane, rings zigzagged "
       "to make that exact (open ends only; radially and axially folded, no layers touching); "
-      "its ends pulled apart along the axis; with --cells triangles the facets bend where "
+      "its ends pulled apart along the axis (with --inflate: by strings while gas fills it); "
+      "with --cells triangles the facets bend where "
       "quadrilateral segments lock (docs/fold.md, Triangle cells)");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
@@ -548,7 +575,7 @@ void register_cone(CLI::App* gen) {
       CreasePattern p;
       in_scene_file(
           "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-      write_reflected_cone(*o, *s, p, *inflate, *caps);
+      write_reflected_cone(*o, *s, p, *inflate);
       return;
     }
     const bool from_stack = stowed_option->count() > 0;
