@@ -437,7 +437,7 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "apart\n"
       "# along the axis, nothing clamped: the top band's whole facets up, the base band's down,\n"
       "# {:.4g} m each (probes top and base sum each end's gauges){}"
-      "# (docs/folding.md). Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
+      " Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
       "#   finseg run {} --out deploy\n"
       "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
@@ -452,7 +452,8 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
                 "# (free across the axis) while gas fills the wall closed by caps of its end "
                 "rings:\n"
                 "# the deployment air, then twice as much again from 0.9 s, held to 1.3 s\n"
-              : "; the base band stays gathered\n",
+                "# (docs/gas.md, \"The cone stowed by reflection, inflated\").\n#"
+              : "; the base band stays gathered\n# (docs/folding.md).",
       scene_name,
       inflate ? "inflated while its ends are drawn apart" : "its ends pulled apart along the axis",
       sheet_sections(o, fold_file, 1e-3), most_force, contact_stiffness, drives,
