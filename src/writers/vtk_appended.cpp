@@ -31,9 +31,9 @@ std::string vtk_zlib_block(const std::string& bytes, std::size_t block_size) {
     std::string out(out_len, '\0');
     // The fastest level: doubles of positions hardly compress (an 11 200-segment frame 8.6 ->
     // 6.6 MB at level 1 and at the default 6) and level 6 took 1.7 times as long.
-    const int rc = compress2(reinterpret_cast<Bytef*>(out.data()), &out_len,
-                             reinterpret_cast<const Bytef*>(bytes.data() + b * block_size), len,
-                             Z_BEST_SPEED);
+    const int rc =
+        compress2(reinterpret_cast<Bytef*>(out.data()), &out_len,
+                  reinterpret_cast<const Bytef*>(bytes.data() + b * block_size), len, Z_BEST_SPEED);
     if (rc != Z_OK) throw std::runtime_error(fmt::format("zlib compress2 failed ({})", rc));
     append_u64(header, out_len);
     body.append(out.data(), out_len);
