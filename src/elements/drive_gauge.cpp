@@ -17,27 +17,33 @@ Target target_of(const DriveDef& d, const State& state, int i) {
   return {d.start_W + state.drive_s[i] * d.direction_W, rate * d.direction_W};
 }
 
-// The gauge's axes: a x along direction_W, lateral_ratio a x across it (a = k or c).
-Mat3 gauge_axes(const DriveDef& d, double along) {
+// The gauge's stiffness K and damping C: k and c along direction_W, lateral_ratio times them
+// across it.
+struct GaugeAxes {
+  Mat3 K, C;
+};
+
+GaugeAxes gauge_axes(const DriveDef& d) {
   const Vec3& n = d.direction_W;
-  return along * (d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * n * n.transpose());
+  const Mat3 axes = d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * n * n.transpose();
+  return {d.stiffness * axes, d.damping * axes};
 }
 
 // f = -K (x - X) - C (v + w x r - V) at the point x = p + r, its moment r x f about the
 // centroid. With dx = dp - [r]x dphi and d(w x r) = -[w]x [r]x dphi + ... (world-frame
 // increments): df/dp = -K, df/dphi = K [r]x + C [w]x [r]x, dm = -[f]x dr + [r]x df;
 // df/dv = -C, df/dw = C [r]x.
-Vec3 gauge_force(const DriveDef& d, const Target& tgt, const State& s) {
+Vec3 gauge_force(const DriveDef& d, const GaugeAxes& g, const Target& tgt, const State& s) {
   const Vec3 r = s.R_WB[d.body] * d.point_B;
   const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
-  return -gauge_axes(d, d.stiffness) * (s.p_W[d.body] + r - tgt.x_W) -
-         gauge_axes(d, d.damping) * (v_P - tgt.v_W);
+  return -g.K * (s.p_W[d.body] + r - tgt.x_W) - g.C * (v_P - tgt.v_W);
 }
 
 void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assembler& as) {
   const Vec3 r = s.R_WB[d.body] * d.point_B, stretch = s.p_W[d.body] + r - tgt.x_W;
-  const Vec3 f = gauge_force(d, tgt, s);
-  const Mat3 K = gauge_axes(d, d.stiffness), C = gauge_axes(d, d.damping);
+  const GaugeAxes g = gauge_axes(d);
+  const Mat3 &K = g.K, &C = g.C;
+  const Vec3 f = gauge_force(d, g, tgt, s);
   as.add(d.body, {f, r.cross(f)});
   as.add_energy(0.5 * stretch.dot(K * stretch));
   const Mat3 hr = hat(r);
@@ -55,7 +61,7 @@ void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assem
 
 Vec3 drive_force(const Model& model, const State& state, int i) {
   const DriveDef& d = model.drives[i];
-  return gauge_force(d, target_of(d, state, i), state);
+  return gauge_force(d, gauge_axes(d), target_of(d, state, i), state);
 }
 
 void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
@@ -70,8 +76,8 @@ void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
       using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
       const Vec3T<T> P = A.point_W(d.point_B);
       const Vec3T<T> stretch = P - tgt.x_W.cast<T>();
-      const Mat3T<T> K = gauge_axes(d, d.stiffness).cast<T>(),
-                     C = gauge_axes(d, d.damping).cast<T>();
+      const GaugeAxes g = gauge_axes(d);
+      const Mat3T<T> K = g.K.cast<T>(), C = g.C.cast<T>();
       const Vec3T<T> f = -K * stretch - C * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
       w.add_force_at(f, P, A.p_W);
       return T(0.5) * stretch.dot(K * stretch);
