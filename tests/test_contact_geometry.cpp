@@ -97,6 +97,48 @@ TEST(RoundedPlate, PointsBesideAnEdgeAndBeyondACornerTouchTheRoundedRim) {
   EXPECT_NEAR(slope_out, 0, 1e-3);  // -x/dist with x of a few eps: nearly flat
 }
 
+// A point that had sunk past the mid-plane (below it, side +1) at the last commit slides off
+// the face across an edge: over the face it is pushed back up from r_src + r + |h| deep;
+// beside the edge the rim alone would see it r_src + r - |h| deep and push it on down, a jump
+// of twice its force. collision/sunk_edge.hpp joins the two with a continuous depth and normal.
+TEST(RoundedPlate, SunkPointBesideAnEdgeJoinsThePushOverTheFace) {
+  const Rect st(0.01, 0.005, 5e-5);
+  const double r_src = 5e-5, reach = r_src + st.r, h = -3e-5;
+  const Vec3 up = target().R_WB.col(2);
+  auto at = [&](double dx, double z, bool sunk = true) {
+    return point_on_plate(target(), st.shape, in_target({st.hx + dx, 0.001, z}), r_src, 1, sunk);
+  };
+  const double eps = 1e-12;
+  const PointContact<double> in = at(-eps, h), out = at(eps, h);
+  EXPECT_NEAR(in.depth, reach - h, 1e-16);
+  // Not sunk at the last commit (it crossed the mid-plane beside the plate: round the rim),
+  // only the rim counts.
+  EXPECT_NEAR(at(eps, h, false).depth, reach - std::abs(h), 1e-15);
+  EXPECT_NEAR(out.depth, in.depth, 1e-15);
+  EXPECT_LT((out.n_W - in.n_W).norm(), 1e-6);
+  EXPECT_GT(out.n_W.dot(up), 0.999999);
+  // Farther out the depth falls and the push turns outwards, all the way to zero at the rim.
+  double last = in.depth;
+  for (double dx : {0.1 * reach, 0.3 * reach, 0.6 * reach, 0.9 * reach}) {
+    const PointContact<double> c = at(dx, h);
+    EXPECT_LT(c.depth, last) << dx;
+    EXPECT_GT(c.n_W.dot(target().R_WB.col(0)), 0) << dx;
+    last = c.depth;
+  }
+  // From the two half thicknesses out it is the rim's distance: no contact.
+  for (double dx : {reach, 2 * reach}) {
+    EXPECT_NEAR(at(dx, h).depth, reach - std::hypot(dx, h), 1e-16) << dx;
+    EXPECT_LT(at(dx, h).depth, 0);
+  }
+  // Across the mid-plane beside the edge (sunk below, on its side above) depth and normal
+  // are continuous too.
+  for (double dx : {0.2 * reach, 0.7 * reach}) {
+    const PointContact<double> below = at(dx, -eps), above = at(dx, eps);
+    EXPECT_NEAR(below.depth, above.depth, 1e-15) << dx;
+    EXPECT_LT((below.n_W - above.n_W).norm(), 1e-6) << dx;
+  }
+}
+
 TEST(RoundedPlate, SamplesIntegrateBilinearFunctionsExactly) {
   // Trapezoidal rule: exact for bilinear integrands. Mean of (x + hx)(y + hy) / (4 hx hy)
   // over the rectangle is 1/4; the mean of x y is 0.
@@ -325,13 +367,8 @@ Eigen::VectorXd contact_gforce(const Model& m, const State& s) {
   return g;
 }
 
-void check_jacobian(FrictionModel friction, bool with_anchor) {
-  TwoPlates tp(friction);
-  if (with_anchor) {
-    commit_contact_history(tp.model, tp.state);
-    ASSERT_FALSE(tp.state.contact.anchors.empty());
-    tp.state.p_W[1] += Vec3(2e-5, -1e-5, 0);  // load the anchor springs
-  }
+// The contact Jacobian of the two plates against central differences of their forces.
+void expect_jacobian_matches_differences(const TwoPlates& tp) {
   const ContactSummary sum = contact_summary(tp.model, tp.state);
   ASSERT_GE(sum.active, 1);
   BodyForces f;
@@ -376,6 +413,16 @@ void check_jacobian(FrictionModel friction, bool with_anchor) {
   }
 }
 
+void check_jacobian(FrictionModel friction, bool with_anchor) {
+  TwoPlates tp(friction);
+  if (with_anchor) {
+    commit_contact_history(tp.model, tp.state);
+    ASSERT_FALSE(tp.state.contact.anchors.empty());
+    tp.state.p_W[1] += Vec3(2e-5, -1e-5, 0);  // load the anchor springs
+  }
+  expect_jacobian_matches_differences(tp);
+}
+
 TEST(ContactJacobian, MatchesCentralDifferencesFrictionless) {
   check_jacobian(FrictionModel::None, false);
 }
@@ -384,6 +431,30 @@ TEST(ContactJacobian, MatchesCentralDifferencesContinuousFriction) {
 }
 TEST(ContactJacobian, MatchesCentralDifferencesAnchorFriction) {
   check_jacobian(FrictionModel::Anchor, true);
+}
+
+// The smaller plate's edge, 3e-5 m inside the larger plate's edge, committed touching from
+// above and then sunk 3e-5 m below the larger plate's mid-plane; then drawn 6e-5 m back (3e-5
+// m beside the edge), 5e-5 m below and turned a little: its edge samples are sunk beside the
+// polygon (collision/sunk_edge.hpp), deeper than the two half thicknesses, which only a sunk
+// point can be.
+TEST(ContactJacobian, MatchesCentralDifferencesSunkBesideAnEdge) {
+  TwoPlates tp(FrictionModel::Continuous);
+  const double reach = 2e-4;  // the plates' half thicknesses summed
+  tp.state.p_W = {Vec3(0, 0, 1.5e-4), Vec3(0.01 + 0.015 - 3e-5, 0, 0)};
+  tp.state.R_WB = {Mat3::Identity(), Mat3::Identity()};
+  commit_contact_history(tp.model, tp.state);
+  ASSERT_FALSE(tp.state.contact.anchors.empty());
+  tp.state.p_W[0].z() = -3e-5;
+  commit_contact_history(tp.model, tp.state);
+  ASSERT_FALSE(tp.state.contact.anchors.empty());
+  tp.state.p_W[0] = Vec3(-6e-5, 0, -5e-5);
+  tp.state.R_WB = {Eigen::AngleAxisd(2e-3, Vec3(0.3, 1, 0.2).normalized()).toRotationMatrix(),
+                   Eigen::AngleAxisd(1e-3, Vec3(1, -0.4, 0.5).normalized()).toRotationMatrix()};
+  const ContactSummary sum = contact_summary(tp.model, tp.state);
+  ASSERT_GE(sum.active, 1);
+  EXPECT_GT(sum.max_penetration, reach);
+  expect_jacobian_matches_differences(tp);
 }
 
 TEST(ContactForces, ForcesBalanceAndPushThePlatesApart) {

@@ -1,8 +1,8 @@
 // Closed-form contact Jacobian (collision/contact_jacobian.*) against its oracle, the
 // automatic differentiation of the same kernel (issue 12 item 3: agreement to 1e-10
 // relative), for every friction model and damping law, over the face, beside edges and
-// corners, for triangles, in and beyond the damping blend zone, with sliding and sticking
-// anchors, and with one plate clamped.
+// corners (also sunk past the mid-plane), for triangles, in and beyond the damping blend zone,
+// with sliding and sticking anchors, and with one plate clamped.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -160,6 +160,25 @@ TEST(ContactJacobianClosedForm, EdgeAndCornerContact) {
       p.state.p_W[1] += Vec3(-3e-6, 1e-6, -2e-6);
       expect_matches_oracle(p.model, p.state);
     }
+  }
+}
+
+// a's edge sinks past b's mid-plane over b's face (committed there) and is then drawn back
+// beside b's edge: samples sunk beside the polygon (collision/sunk_edge.hpp), their normal
+// the gradient of the joining distance.
+TEST(ContactJacobianClosedForm, SunkBesideAnEdge) {
+  for (FrictionModel friction : kFrictions) {
+    SCOPED_TRACE(name(ContactDamping::Impact, friction));
+    Plates p(rectangle(0.02, 0.01), rectangle(0.03, 0.02), ContactDamping::Impact, friction);
+    p.state.p_W = {Vec3(0, 0, 1.5e-4), Vec3(0.025 - 3e-5, 0, 0)};  // a's edge 3e-5 over b
+    p.state.R_WB = {Mat3::Identity(), Mat3::Identity()};
+    commit_contact_history(p.model, p.state);
+    p.state.p_W[0].z() = -3e-5;  // sunk over the face
+    commit_contact_history(p.model, p.state);
+    p.state.p_W[0] = Vec3(-6e-5, 0, -5e-5);  // 3e-5 beside the edge, deeper
+    p.state.R_WB = {turn(2e-3, Vec3(0.3, 1, 0.2)), Mat3::Identity()};
+    ASSERT_GT(contact_summary(p.model, p.state).max_penetration, 2e-4) << "not sunk";
+    expect_matches_oracle(p.model, p.state);
   }
 }
 

@@ -45,6 +45,23 @@ BodyKin<double> kin_of(const State& s, int i) {
   return {s.p_W[i], s.R_WB[i], s.v_W[i], s.w_W[i]};
 }
 
+/// Where the source's point r_B was in the target's frame at the last commit of the history;
+/// false when the state has none.
+bool committed_place(const State& state, int src, int tgt, const Vec3& r_B, Vec3& was) {
+  const ContactState& h = state.contact;
+  if (h.p_W.size() != state.p_W.size() || h.R_WB.size() != state.R_WB.size()) return false;
+  was = h.R_WB[tgt].transpose() * (h.p_W[src] + h.R_WB[src] * r_B - h.p_W[tgt]);
+  return true;
+}
+
+/// True for a point kept on `side` that was past the target's mid-plane already at the last
+/// commit (sunk into it then): beside the polygon it is still pushed back
+/// (collision/sunk_edge.hpp); one that crossed the mid-plane beside it since went round the rim.
+bool sunk_at_commit(const State& state, int src, int tgt, const Vec3& r_B, int side) {
+  Vec3 was;
+  return side != 0 && committed_place(state, src, tgt, r_B, was) && side * was.z() < 0;
+}
+
 /// Side of the target plate (+1 / -1 along its normal) a sample point of the source enters
 /// the contact from: the side it is on, unless its path since the last commit (straight, in
 /// the target's frame) went through the target's face; then the side it came from, so that
@@ -57,9 +74,8 @@ int entry_side(const State& state, int src, int tgt, const Vec3& r_B, const Plat
                double reach) {
   const Vec3 now =
       state.R_WB[tgt].transpose() * (state.p_W[src] + state.R_WB[src] * r_B - state.p_W[tgt]);
-  const ContactState& h = state.contact;
-  if (h.p_W.size() == state.p_W.size() && h.R_WB.size() == state.R_WB.size()) {
-    const Vec3 was = h.R_WB[tgt].transpose() * (h.p_W[src] + h.R_WB[src] * r_B - h.p_W[tgt]);
+  Vec3 was;
+  if (committed_place(state, src, tgt, r_B, was)) {
     if ((was.z() > 0) != (now.z() > 0)) {
       const Vec3 cross = was + (was.z() / (was.z() - now.z())) * (now - was);
       if (polygon_contains(*st.outline, Vec2(cross.x(), cross.y()), 0)) return was.z() > 0 ? 1 : -1;
@@ -173,13 +189,14 @@ void detect(const Model& model, const State& state, DetectFor what, const Contac
                          : ignored ? 0
                                    : entry_side(state, src, tgt, samples[k].r_B, st, ss.r + st.r);
         const int side = kept != 0 ? kept : G.R_WB.col(2).dot(p_W - G.p_W) >= 0 ? 1 : -1;
-        const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side);
+        const bool sunk = an && sunk_at_commit(state, src, tgt, samples[k].r_B, an->side);
+        const PointContact<double> c = point_on_plate(G, st, p_W, ss.r, side, sunk);
         if (!(c.depth > 0)) continue;
         const double overlap = ignored ? c.depth : an ? an->overlap : 0;
         // No force before the point has a side: the layers pass each other freely until then.
         if (what == DetectFor::Forces && (kept == 0 || !(c.depth > overlap))) continue;
         pc.points.push_back(
-            {dir, k, samples[k].r_B, dir_share * samples[k].weight, side, kept, an, overlap});
+            {dir, k, samples[k].r_B, dir_share * samples[k].weight, side, kept, an, overlap, sunk});
       }
     }
     if (!pc.points.empty()) visit(std::as_const(pc));
@@ -232,7 +249,7 @@ T evaluate_pair(const ContactDef& def, const PairContact& pc, const BodyKin<T>& 
     Wrench<T>& w_tgt = pt.dir == 0 ? wb : wa;
     const PlateShape& ss = pt.dir == 0 ? pc.sa : pc.sb;
     const PlateShape& st = pt.dir == 0 ? pc.sb : pc.sa;
-    const PointContact<T> c = point_on_plate(tgt, st, src.point_W(pt.r_B), ss.r, pt.side);
+    const PointContact<T> c = point_on_plate(tgt, st, src.point_W(pt.r_B), ss.r, pt.side, pt.sunk);
     const T depth = c.depth - T(pt.overlap);  // what the force pushes against
     const Vec3T<T> v_rel =
         (src.v_W + src.w_W.cross(c.x_W - src.p_W)) - (tgt.v_W + tgt.w_W.cross(c.x_W - tgt.p_W));
@@ -371,6 +388,9 @@ void commit_contact_history(const Model& model, State& state, bool start) {
                an.r_tgt_B = tgt.R_WB.transpose() * (r.x_W - tgt.p_W);
                an.r_src_B = src.R_WB.transpose() * (r.x_W + offset - src.p_W);
              }
+             // Beside the polygon, past the mid-plane, not sunk at the last commit: it went
+             // round the rim and is on the side it is on (the rim's force either way).
+             if (!pt.sunk && an.side * r.height < 0 && (r.du != 0 || r.dv != 0)) an.side = -an.side;
              an.slip_speed = r.v_t.norm();
              if (pt.overlap > 0 && !part_overlap(an, r, pt.overlap, pc.sa.r + pc.sb.r)) continue;
              next.push_back(an);

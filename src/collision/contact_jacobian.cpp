@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "collision/contact_laws.hpp"
+#include "collision/sunk_edge.hpp"
 #include "core/so3.hpp"
 
 namespace finseg {
@@ -91,6 +92,30 @@ void anchor_friction(const ContactDef& def, const ActivePoint& pt, const PointRe
   Jft.v = Jcs.v + Jcd.v;
 }
 
+/// Slopes of a sunk point's distance beside the polygon and of its normal (less the normal's
+/// turn with the target, -[n] dphi_G) from those of m = (du, dv, h), the offset in the target's
+/// frame (Jm), L the two half thicknesses summed, R_G the target's orientation.
+void sunk_edge_slopes(const Vec3& m, double L, const Mat3& R_G, const Mat3x12& Jm, Row12& Jdist,
+                      Mat3x12& Jn) {
+  const Eigen::Vector2d p = m.head<2>();
+  const double delta = p.norm();
+  const Eigen::Vector2d e = p / delta;
+  const SunkEdgeDistance<double> s = sunk_edge_distance(delta, m.z(), L);
+  const SunkEdgeCurvature c = sunk_edge_curvature(delta, m.z(), L);
+  Vec3 g;
+  g << s.f_delta * e, s.f_h;
+  Mat3 H;
+  H.topLeftCorner<2, 2>() = c.f_dd * e * e.transpose() +
+                            (s.f_delta / delta) * (Eigen::Matrix2d::Identity() - e * e.transpose());
+  H.topRightCorner<2, 1>() = c.f_dh * e;
+  H.bottomLeftCorner<1, 2>() = c.f_dh * e.transpose();
+  H(2, 2) = c.f_hh;
+  const double norm = g.norm();
+  const Vec3 n_G = g / norm;
+  Jdist = g.transpose() * Jm;
+  Jn = R_G * (((Mat3::Identity() - n_G * n_G.transpose()) / norm) * H * Jm);
+}
+
 }  // namespace
 
 void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
@@ -120,7 +145,9 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     Jl.block<3, 3>(0, Gp + 3) = Rt * hat(d);
 
     // Distance and normal (point_on_plate): over the face dist = side h and n = side e_z;
-    // outside it q = R_G (du, dv, h), dist = |q|, n = q / dist, dn = (I - n n^T) dq / dist.
+    // outside it, with m = (du, dv, h) in the target's frame, q = R_G m, dist = |q|,
+    // n = q / dist, dn = (I - n n^T) dq / dist; sunk beside it dist = f(m) (sunk_edge.hpp),
+    // n = R_G g / |g| with g = grad f, dn = R_G (I - n_G n_G^T) H dm / |g| - [n] dphi_G.
     const double dist = r.dist;
     const Vec3& n = r.n_W;
     Row12 Jdist;
@@ -130,15 +157,20 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
       Jn.setZero();
       Jn.block<3, 3>(0, Gp + 3) = -hat(n);
     } else {
-      const Vec3 q = tgt.R_WB * Vec3(r.du, r.dv, r.height);
       const Eigen::Matrix2d P = polygon_offset_slope(*st.outline, r.feature);
       Mat3x12 Jm;
       Jm.topRows<2>() = P * Jl.topRows<2>();
       Jm.row(2) = Jl.row(2);
-      Mat3x12 Jq = tgt.R_WB * Jm;
-      Jq.block<3, 3>(0, Gp + 3) -= hat(q);
-      Jdist = n.transpose() * Jq;
-      Jn = ((I - n * n.transpose()) / dist) * Jq;
+      if (pt.sunk && pt.side * r.height < 0) {
+        sunk_edge_slopes(Vec3(r.du, r.dv, r.height), ss.r + st.r, tgt.R_WB, Jm, Jdist, Jn);
+        Jn.block<3, 3>(0, Gp + 3) -= hat(n);
+      } else {
+        const Vec3 q = tgt.R_WB * Vec3(r.du, r.dv, r.height);
+        Mat3x12 Jq = tgt.R_WB * Jm;
+        Jq.block<3, 3>(0, Gp + 3) -= hat(q);
+        Jdist = n.transpose() * Jq;
+        Jn = ((I - n * n.transpose()) / dist) * Jq;
+      }
     }
 
     // Contact point x = p - n (dist + r_s - r_t) / 2 and the relative velocity there.

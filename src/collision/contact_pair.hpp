@@ -19,6 +19,9 @@ struct ActivePoint {
   int anchor_side = 1;  ///< the side its history keeps (ContactAnchor::side; 0: none yet)
   const ContactAnchor* anchor = nullptr;
   double overlap = 0;  ///< penetration not pushed against, m (ContactAnchor::overlap)
+  /// Past the target's mid-plane (on the far side from `side`) already at the last commit:
+  /// beside the polygon it is still pushed back (point_on_plate's `sunk`).
+  bool sunk = false;
 };
 
 /// Slip speed where the continuous friction law takes its falling branch for this point: its

@@ -20,6 +20,7 @@
 // Eigen/Dense must come before the AutoDiff header that kinematics.hpp pulls in.
 #include "core/types.hpp"
 
+#include "collision/sunk_edge.hpp"
 #include "elements/kinematics.hpp"
 #include "model/model.hpp"
 
@@ -145,12 +146,15 @@ struct PointContact {
 };
 
 /// Contact of the source point p_W (on a plate of half thickness r_src) with the target
-/// rounded plate. `side` (+1 / -1) is the face of the target the point is on; it decides
-/// the normal only above the polygon itself, where it keeps a point that has sunk past
-/// the target's mid-plane pushing back towards its own side.
+/// rounded plate. `side` (+1 / -1) is the face of the target the point is on; above the
+/// polygon it keeps a point that has sunk past the target's mid-plane pushing back towards its
+/// own side. `sunk`: the point was past the mid-plane already at the last commit of the
+/// history; beside the polygon its distance then joins that push continuously to the rim's
+/// (collision/sunk_edge.hpp; `dist` is that distance, `n_W` its direction of steepest
+/// growth); else beside the polygon only the rim counts, whatever the side.
 template <class T>
 PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, const Vec3T<T>& p_W,
-                               double r_src, int side) {
+                               double r_src, int side, bool sunk = false) {
   using std::sqrt;
   const Vec3T<T> ex = tgt.R_WB.col(0), ey = tgt.R_WB.col(1), ez = tgt.R_WB.col(2);
   const Vec3T<T> d = p_W - tgt.p_W;
@@ -166,6 +170,13 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
   if (value_of(du) == 0 && value_of(dv) == 0) {
     dist = T(static_cast<double>(side)) * h;
     c.n_W = T(static_cast<double>(side)) * ez;
+  } else if (sunk && side * value_of(h) < 0) {
+    const T delta = sqrt(du * du + dv * dv);
+    const SunkEdgeDistance<T> s = sunk_edge_distance(delta, h, r_src + st.r);
+    dist = s.f;
+    const Vec3T<T> g = (s.f_delta / delta) * (du * ex + dv * ey) + s.f_h * ez;
+    // (summed in order: a vectorised dot product would round differently for double and T)
+    c.n_W = g / sqrt(g.x() * g.x() + g.y() * g.y() + g.z() * g.z());
   } else {
     dist = sqrt(du * du + dv * dv + h * h);
     c.n_W = (du * ex + dv * ey + h * ez) / dist;
