@@ -199,13 +199,14 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
     }
   }
   // The shipped examples: apart, with the generator's contact stiffness for its pull, the ends
-  // drawn apart by 22 drives: F = 20 N/m x both ends' travel; inflated, by strings (free across
-  // the axis) round the chamber of the wall.
+  // drawn apart by 22 drives: F = one gauge's largest pull (stiffness x travel); inflated, by
+  // strings (free across the axis) round the chamber of the wall.
   for (const char* file : {"reflected.yaml", "reflected_inflate.yaml"}) {
     SCOPED_TRACE(file);
     const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
     ASSERT_EQ(scene.model.drives.size(), 22u);
-    expect_example_start(scene.model, 20 * 2 * scene.model.drives[0].travel);
+    const DriveDef& gauge = scene.model.drives[0];
+    expect_example_start(scene.model, gauge.stiffness * gauge.travel);
     const bool inflated = std::string(file) == "reflected_inflate.yaml";
     EXPECT_EQ(scene.model.chambers.size(), inflated ? 1u : 0u);
     for (const DriveDef& d : scene.model.drives) EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);

@@ -410,9 +410,8 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   };
   const double travel = 0.5 * (apart(deployed) - apart(p.vertices_folded_m));
   const double gauge = 1e4 / static_cast<double>(top.size());
-  // Contact stiffness for a few newtons a facet (docs/folding.md): that of 20 N/m over the
-  // whole travel, as the single-facet pull it replaced had.
-  const double most_force = std::max(20 * 2 * travel, 0.1);
+  // Contact stiffness (docs/folding.md): the largest pull of one gauge, its facet held.
+  const double most_force = std::max(gauge * travel, 0.1);
   std::string drives = "drives:\n", top_names, base_names;
   for (std::size_t k = 0; k < top.size(); ++k) {
     const std::string t = fmt::format("top{}", k + 1), b = fmt::format("base{}", k + 1);
@@ -441,8 +440,8 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "#   finseg run {} --out deploy\n"
       "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
-      "# contact stiffness: {:.3g} N on one face at a quarter of the thickness; no friction:\n"
-      "# with it (mu 0.3) the steps fell to 1e-7 s where layers slid at the bands' snap\n"
+      "# contact stiffness: {:.3g} N (a gauge's largest pull) on one face at a quarter of the\n"
+      "# thickness; no friction: with it (mu 0.3) the steps fell to 1e-7 s where layers slid\n"
       "# (docs/folding.md)\n"
       "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
       "          friction: {{model: none}}}}\n"
