@@ -84,6 +84,11 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   r = run_finseg(dir, "inspect o.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 39 (1 fixed)"), std::string::npos) << r.out;
+  // The force check at its start: the force Jacobian agrees with central differences of the
+  // forces everywhere (solvers/force_check.hpp).
+  r = run_finseg(dir, "inspect o.yaml --check-forces");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("every entry agrees"), std::string::npos) << r.out;
   // From the fan stack (open ends only): the pattern's folded form reads back (planar faces,
   // the seam closed).
   r = run_finseg(dir,

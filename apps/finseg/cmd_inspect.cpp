@@ -1,5 +1,6 @@
-// finseg inspect SCENE [--incidence FILE.csv] [--levers FILE.csv]: counts of the model and
-// the incidence matrix S^c and lever vectors c_ik of the paper's eqs. 1-4.
+// finseg inspect SCENE [--incidence FILE.csv] [--levers FILE.csv] [--check-forces [--state F]]:
+// counts of the model, the incidence matrix S^c and lever vectors c_ik of the paper's eqs. 1-4,
+// and the force Jacobian checked against central differences (solvers/force_check.hpp).
 #include <fmt/format.h>
 
 #include <memory>
@@ -7,6 +8,9 @@
 
 #include "apps/finseg/commands.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/state_file.hpp"
+#include "solvers/dofs.hpp"
+#include "solvers/force_check.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/run_outputs.hpp"
 
@@ -15,7 +19,9 @@ namespace finseg::cli {
 namespace {
 
 struct InspectOptions {
-  std::string scene, incidence, levers;
+  std::string scene, incidence, levers, state;
+  bool check_forces = false;
+  double step = 1e-7;
 };
 
 // S_ik = +1 if body i is the inner body e+(k) of element k, -1 if the outer e-(k), else 0.
@@ -70,6 +76,39 @@ std::string levers_csv(const Model& m) {
   return out;
 }
 
+// The force Jacobian against central differences at the scene's start or a state file.
+void check_forces(const Scene& scene, const InspectOptions& o) {
+  const Model& m = scene.model;
+  State state = o.state.empty() ? initial_state(m) : read_state_file(o.state, m).state;
+  commit_history(m, state, o.state.empty());  // as a solver holds it after a step
+  fmt::print(
+      "force Jacobian against central differences at t = {:.6g} s, steps {:g} and {:g} "
+      "(m, rad, m/s, rad/s; {} force evaluations):\n",
+      state.t, o.step, 0.1 * o.step, 8 * m.num_dofs);
+  const std::vector<ForceMismatch> found = check_force_jacobian(m, state, o.step);
+  if (found.empty()) {
+    fmt::print("  every entry agrees (within 1e-3 of its size)\n");
+    return;
+  }
+  static const char* force[] = {"f_x", "f_y", "f_z", "m_x", "m_y", "m_z"};
+  static const char* pose[] = {"x", "y", "z", "rot_x", "rot_y", "rot_z"};
+  static const char* rate[] = {"v_x", "v_y", "v_z", "w_x", "w_y", "w_z"};
+  fmt::print("  {:<9} {:<28} {:<28} {:>13} {:>13} {:>13}\n", "kind", "force", "moved", "jacobian",
+             "difference", "step / 10");
+  const std::size_t shown = std::min<std::size_t>(found.size(), 20);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const ForceMismatch& x = found[i];
+    fmt::print("  {:<9} {:<28} {:<28} {:>13.5g} {:>13.5g} {:>13.5g}\n", to_string(x.kind),
+               m.bodies[x.body].name + " " + force[x.dof],
+               m.bodies[x.perturbed].name + " " + (x.velocity ? rate : pose)[x.perturbed_dof],
+               x.jacobian, x.coarse, x.fine);
+  }
+  if (found.size() > shown) fmt::print("  ... {} more pairs\n", found.size() - shown);
+  fmt::print(
+      "  jump: the difference grows as the step shrinks (a force that jumps; Newton cannot "
+      "cross it); inexact: it stays; curvature: it shrinks\n");
+}
+
 void inspect(const InspectOptions& o) {
   const Scene scene = read_scene(o.scene);
   const Model& m = scene.model;
@@ -97,6 +136,7 @@ void inspect(const InspectOptions& o) {
     write_file_atomically(o.levers, levers_csv(m));
     fmt::print("wrote {} (lever vectors c_ik, body frames, m)\n", o.levers);
   }
+  if (o.check_forces) check_forces(scene, o);
 }
 
 }  // namespace
@@ -107,6 +147,12 @@ void register_inspect(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "scene file")->required();
   cmd->add_option("--incidence", o->incidence, "write S^c (bodies x elements) as CSV");
   cmd->add_option("--levers", o->levers, "write the lever vectors c_ik as CSV");
+  cmd->add_flag("--check-forces", o->check_forces,
+                "check the force Jacobian against central differences of the forces (finds "
+                "forces that jump, where the implicit solver's steps crawl)");
+  cmd->add_option("--state", o->state, "with --check-forces: at this state file (checkpoint.json)");
+  cmd->add_option("--step", o->step, "with --check-forces: the difference step, m and rad")
+      ->check(CLI::PositiveNumber);
   cmd->callback([o] { inspect(*o); });
 }
 
