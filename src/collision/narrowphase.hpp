@@ -175,8 +175,7 @@ PointContact<T> point_on_plate(const BodyKin<T>& tgt, const PlateShape& st, cons
     const SunkEdgeDistance<T> s = sunk_edge_distance(delta, h, r_src + st.r);
     dist = s.f;
     const Vec3T<T> g = (s.f_delta / delta) * (du * ex + dv * ey) + s.f_h * ez;
-    // (summed in order: a vectorised dot product would round differently for double and T)
-    c.n_W = g / sqrt(g.x() * g.x() + g.y() * g.y() + g.z() * g.z());
+    c.n_W = g / sqrt(g.dot(g));
   } else {
     dist = sqrt(du * du + dv * dv + h * h);
     c.n_W = (du * ex + dv * ey + h * ez) / dist;

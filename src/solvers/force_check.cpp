@@ -35,13 +35,23 @@ Eigen::VectorXd central_difference(const Model& model, const State& state, int c
   return (forces_at(model, a) - forces_at(model, b)) / (2 * h);
 }
 
-// The body whose dofs hold dof d, and d's place among them.
-std::pair<int, int> body_of_dof(const Model& model, int d) {
+// Per dof, the body that holds it.
+std::vector<int> bodies_of_dofs(const Model& model) {
+  std::vector<int> body(model.num_dofs, -1);
   for (std::size_t i = 0; i < model.bodies.size(); ++i) {
     const int first = model.dof_of_body[i];
-    if (first >= 0 && d >= first && d < first + 6) return {static_cast<int>(i), d - first};
+    for (int k = 0; first >= 0 && k < 6; ++k) body[first + k] = static_cast<int>(i);
   }
-  return {-1, 0};
+  return body;
+}
+
+// Jumps first, then inexact entries, then curvature; the largest disagreement first in each.
+bool listed_before(const ForceMismatch& a, const ForceMismatch& b) {
+  const auto rank = [](ForceMismatchKind k) {
+    return k == ForceMismatchKind::Jump ? 0 : k == ForceMismatchKind::Inexact ? 1 : 2;
+  };
+  if (rank(a.kind) != rank(b.kind)) return rank(a.kind) < rank(b.kind);
+  return std::abs(a.fine - a.jacobian) > std::abs(b.fine - b.jacobian);
 }
 
 ForceMismatchKind kind_of(double coarse_gap, double fine_gap) {
@@ -63,6 +73,7 @@ std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State&
     return A.nonZeros() > 0 ? A.coeffs().cwiseAbs().maxCoeff() : 0.0;
   };
   const double scale = std::max(largest(jac.dq), largest(jac.dv));
+  const std::vector<int> body_of = bodies_of_dofs(model);
   // The largest mismatch per (body, perturbed body, velocity).
   std::map<std::tuple<int, int, bool>, ForceMismatch> worst;
   for (const bool velocity : {false, true}) {
@@ -79,10 +90,16 @@ std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State&
         const double gap_c = std::abs(coarse[r] - J[r]), gap_f = std::abs(fine[r] - J[r]);
         const double allowed = tolerance * std::abs(J[r]) + 1e-9 * scale;
         if (std::max(gap_c, gap_f) <= allowed) continue;
-        const auto [body, dof] = body_of_dof(model, r);
-        const auto [moved, moved_dof] = body_of_dof(model, c);
-        const ForceMismatch m{
-            body, dof, moved, moved_dof, velocity, J[r], coarse[r], fine[r], kind_of(gap_c, gap_f)};
+        const int body = body_of[r], moved = body_of[c];
+        const ForceMismatch m{body,
+                              r - model.dof_of_body[body],
+                              moved,
+                              c - model.dof_of_body[moved],
+                              velocity,
+                              J[r],
+                              coarse[r],
+                              fine[r],
+                              kind_of(gap_c, gap_f)};
         ForceMismatch& w = worst[{body, moved, velocity}];
         if (w.body < 0 || std::abs(m.fine - m.jacobian) > std::abs(w.fine - w.jacobian)) w = m;
       }
@@ -90,9 +107,7 @@ std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State&
   }
   std::vector<ForceMismatch> out;
   for (const auto& [key, m] : worst) out.push_back(m);
-  std::sort(out.begin(), out.end(), [](const ForceMismatch& a, const ForceMismatch& b) {
-    return std::abs(a.fine - a.jacobian) > std::abs(b.fine - b.jacobian);
-  });
+  std::sort(out.begin(), out.end(), listed_before);
   return out;
 }
 

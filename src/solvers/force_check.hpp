@@ -32,7 +32,8 @@ struct ForceMismatch {
 /// The entries (forces, pose and velocity columns) where a central difference at step h (m,
 /// rad, m/s, rad/s) or h / 10 differs from the Jacobian by more than `tolerance` of the entry's
 /// size plus 1e-9 of the Jacobian's largest entry, at most one per pair of bodies and kind of
-/// column (the largest), largest first. Costs eight force evaluations per degree of freedom.
+/// column (the largest), jumps first, then inexact entries, then curvature, largest first in
+/// each. Costs eight force evaluations per degree of freedom.
 std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State& state, double h,
                                                 double tolerance = 1e-3);
 
