@@ -7,9 +7,9 @@
 #include <string>
 
 #include "apps/finseg/commands.hpp"
+#include "elements/assemble.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
-#include "solvers/dofs.hpp"
 #include "solvers/force_check.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/run_outputs.hpp"

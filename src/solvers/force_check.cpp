@@ -12,29 +12,6 @@
 namespace finseg {
 namespace {
 
-Eigen::VectorXd forces_at(const Model& model, const State& state) {
-  BodyForces f;
-  compute_forces(model, state, f);
-  return generalized_forces(model, f);
-}
-
-// Central difference of the generalized forces along dof c, of the poses or the velocities.
-Eigen::VectorXd central_difference(const Model& model, const State& state, int c, double h,
-                                   bool velocity) {
-  State a = state, b = state;
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(model.num_dofs);
-  e[c] = h;
-  if (velocity) {
-    const Eigen::VectorXd v = velocity_vector(model, state);
-    set_velocity(model, a, v + e);
-    set_velocity(model, b, v - e);
-  } else {
-    apply_pose_increment(model, a, e);
-    apply_pose_increment(model, b, -e);
-  }
-  return (forces_at(model, a) - forces_at(model, b)) / (2 * h);
-}
-
 // Per dof, the body that holds it.
 std::vector<int> bodies_of_dofs(const Model& model) {
   std::vector<int> body(model.num_dofs, -1);
@@ -60,7 +37,29 @@ ForceMismatchKind kind_of(double coarse_gap, double fine_gap) {
   return ForceMismatchKind::Inexact;
 }
 
+Eigen::VectorXd forces_at(const Model& model, const State& state) {
+  BodyForces f;
+  compute_forces(model, state, f);
+  return generalized_forces(model, f);
+}
+
 }  // namespace
+
+Eigen::VectorXd force_difference(const Model& model, const State& state, int dof, double h,
+                                 bool velocity) {
+  State a = state, b = state;
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(model.num_dofs);
+  e[dof] = h;
+  if (velocity) {
+    const Eigen::VectorXd v = velocity_vector(model, state);
+    set_velocity(model, a, v + e);
+    set_velocity(model, b, v - e);
+  } else {
+    apply_pose_increment(model, a, e);
+    apply_pose_increment(model, b, -e);
+  }
+  return (forces_at(model, a) - forces_at(model, b)) / (2 * h);
+}
 
 std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State& state, double h,
                                                 double tolerance) {
@@ -84,8 +83,8 @@ std::vector<ForceMismatch> check_force_jacobian(const Model& model, const State&
       if (!velocity) {
         for (std::size_t k = 0; k < gas.a.size(); ++k) J -= gas.k[k] * gas.a[k][c] * gas.a[k];
       }
-      const Eigen::VectorXd coarse = central_difference(model, state, c, h, velocity);
-      const Eigen::VectorXd fine = central_difference(model, state, c, 0.1 * h, velocity);
+      const Eigen::VectorXd coarse = force_difference(model, state, c, h, velocity);
+      const Eigen::VectorXd fine = force_difference(model, state, c, 0.1 * h, velocity);
       for (int r = 0; r < model.num_dofs; ++r) {
         const double gap_c = std::abs(coarse[r] - J[r]), gap_f = std::abs(fine[r] - J[r]);
         const double allowed = tolerance * std::abs(J[r]) + 1e-9 * scale;

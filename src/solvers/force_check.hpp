@@ -5,6 +5,7 @@
 // as one that shrinks (docs/solvers.md, "Contact: why the implicit solver crawled").
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "model/model.hpp"
@@ -28,6 +29,11 @@ struct ForceMismatch {
   double fine = 0;        ///< central difference at h / 10
   ForceMismatchKind kind = ForceMismatchKind::Curvature;
 };
+
+/// Central difference of the generalized forces (compute_forces) along degree of freedom
+/// `dof`, of step h: of the poses (m, rad) or, with `velocity`, of the velocities (m/s, rad/s).
+Eigen::VectorXd force_difference(const Model& model, const State& state, int dof, double h,
+                                 bool velocity);
 
 /// The entries (forces, pose and velocity columns) where a central difference at step h (m,
 /// rad, m/s, rad/s) or h / 10 differs from the Jacobian by more than `tolerance` of the entry's
