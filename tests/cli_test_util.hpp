@@ -8,9 +8,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "core/types.hpp"
 #include "test_paths.hpp"
 
 namespace finseg::test {
@@ -108,6 +111,18 @@ inline void expect_refused(const TempDir& dir, const std::string& args, const st
   const CliResult r = run_finseg(dir, args);
   EXPECT_EQ(r.code, 2) << args;
   EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
+}
+
+/// The segment centres (p_W_m) of a state file (checkpoint.json), m, in body order.
+inline std::vector<Vec3> state_centres(const std::filesystem::path& state_file) {
+  std::ifstream in(state_file);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::vector<Vec3> p;
+  for (const auto& b : j["bodies"]) {
+    p.emplace_back(b["p_W_m"][0].get<double>(), b["p_W_m"][1].get<double>(),
+                   b["p_W_m"][2].get<double>());
+  }
+  return p;
 }
 
 /// The first word of `args` ("--radius 0" -> "--radius").

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "cli_test_util.hpp"
 #include "core/types.hpp"
@@ -19,14 +17,7 @@ using test::run_finseg;
 using test::TempDir;
 
 std::vector<Vec3> centroids(const TempDir& dir, const std::string& state_file) {
-  std::ifstream in(dir / state_file);
-  const nlohmann::json j = nlohmann::json::parse(in);
-  std::vector<Vec3> p;
-  for (const auto& b : j["bodies"]) {
-    p.emplace_back(b["p_W_m"][0].get<double>(), b["p_W_m"][1].get<double>(),
-                   b["p_W_m"][2].get<double>());
-  }
-  return p;
+  return test::state_centres(dir / state_file);
 }
 
 TEST(CliGenPatterns, MiuraFoldedFromFlatReachesItsFoldedFormAndDeploysFromTheStateFile) {

@@ -441,10 +441,10 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
       "# contact stiffness: {:.3g} N (a gauge's largest pull) on one face at a quarter of the\n"
-      "# thickness; no friction: with it (mu 0.3) the steps fell to 1e-7 s where layers slid\n"
-      "# (docs/folding.md)\n"
+      "# thickness (docs/folding.md); continuous friction between the layers as in the other\n"
+      "# cone scenes\n"
       "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
-      "          friction: {{model: none}}}}\n"
+      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
       "{}{}{}",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, travel,
       inflate ? ", by strings\n"

@@ -319,6 +319,8 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
   }
   const bool jacobian = assembler.want_jacobian();
   const bool with_velocity = assembler.want_velocity_jacobian();
+  const FrictionSlope slope =
+      assembler.friction_secant() ? FrictionSlope::Secant : FrictionSlope::Tangent;
   std::vector<PointReport> reports;
   detect(
       model, state, DetectFor::Forces, state.contact.candidates.get(), [&](const PairContact& pc) {
@@ -332,7 +334,9 @@ void add_contact_forces(const Model& model, const State& state, Assembler& assem
         const PairSlots slots = assembler.reserve_pair(pc.a, pc.b, with_velocity);
         if (!slots.any()) return;
         Mat12 dq = Mat12::Zero(), dv = Mat12::Zero();
-        add_contact_pair_jacobian(def, pc, reports, A, B, slots.with_velocity, dq, dv);
+        if (add_contact_pair_jacobian(def, pc, reports, A, B, slots.with_velocity, slope, dq, dv)) {
+          assembler.mark_secant_differs();
+        }
         assembler.fill_pair(slots, dq, dv);
       });
 }

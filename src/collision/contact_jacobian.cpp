@@ -118,10 +118,12 @@ void sunk_edge_slopes(const Vec3& m, double L, const Mat3& R_G, const Mat3x12& J
 
 }  // namespace
 
-void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
+bool add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
                                const std::vector<PointReport>& reports, const BodyKin<double>& A,
-                               const BodyKin<double>& B, bool with_velocity, Mat12& dq, Mat12& dv) {
+                               const BodyKin<double>& B, bool with_velocity, FrictionSlope friction,
+                               Mat12& dq, Mat12& dv) {
   const Mat3 I = Mat3::Identity();
+  bool secant = false;
   for (std::size_t k = 0; k < pc.points.size(); ++k) {
     const ActivePoint& pt = pc.points[k];
     const PointReport& r = reports[k];
@@ -213,7 +215,9 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
     VecJac Jft;
     if (def.friction == FrictionModel::Continuous ||
         (def.friction == FrictionModel::Anchor && pt.anchor == nullptr)) {
-      const FrictionSlopes fr = continuous_friction_slopes(def, fn, r.v_t, lag_speed(def, pt));
+      const FrictionSlopes fr =
+          continuous_friction_slopes(def, fn, r.v_t, lag_speed(def, pt), friction);
+      secant = secant || fr.secant_differs;
       Jft.q = fr.d_fn * Jfn.q + fr.d_vt * Jvt.q;
       if (with_velocity) Jft.v = fr.d_fn * Jfn.v + fr.d_vt * Jvt.v;
     } else if (def.friction == FrictionModel::Anchor) {
@@ -239,6 +243,7 @@ void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
       dv.block<3, 12>(Gp + 3, 0) -= hrg * Jf.v;
     }
   }
+  return secant;
 }
 
 }  // namespace finseg

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "collision/contact_laws.hpp"
 #include "collision/contact_pair.hpp"
 #include "elements/kinematics.hpp"
 
@@ -16,9 +17,12 @@ namespace finseg {
 /// double evaluation of the pair, one per point, whose branches it follows. Rows [f_A, tau_A, f_B,
 /// tau_B] (world frame, moments about the centroids); columns the pose perturbations [dp_A,
 /// dphi_A, dp_B, dphi_B] (dq) or the velocities [v_A, w_A, v_B, w_B] (dv), as in
-/// ElementJacobian.
-void add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
+/// ElementJacobian. `friction`: the continuous law's tangent or its secant (then the blocks
+/// are Newton's iteration matrix, not the Jacobian); returns whether a secant differed from
+/// its tangent.
+bool add_contact_pair_jacobian(const ContactDef& def, const PairContact& pc,
                                const std::vector<PointReport>& reports, const BodyKin<double>& A,
-                               const BodyKin<double>& B, bool with_velocity, Mat12& dq, Mat12& dv);
+                               const BodyKin<double>& B, bool with_velocity, FrictionSlope friction,
+                               Mat12& dq, Mat12& dv);
 
 }  // namespace finseg

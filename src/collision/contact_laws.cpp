@@ -67,7 +67,7 @@ double friction_coefficient_slope(const ContactDef& c, double v) {
 }
 
 FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t,
-                                          double lag_speed) {
+                                          double lag_speed, FrictionSlope slope) {
   // f = -fn g(v2) v_t with g = mu(v) / v: df/dv_t = -fn (g I + 2 g' v_t v_t^T).
   const double v2 = v_t.squaredNorm();
   const double vs = c.stiction_speed;
@@ -93,6 +93,10 @@ FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const 
   FrictionSlopes r;
   r.f = -fn * g * v_t;
   r.d_fn = -g * v_t;
+  // mu(v) / v never rises with v for these laws (g_slope <= 0): the secant drops the
+  // along-slip term that makes the tangent flatter than it.
+  r.secant_differs = slope == FrictionSlope::Secant && fn != 0 && g_slope * v2 != 0;
+  if (r.secant_differs) g_slope = 0;
   r.d_vt = -fn * (g * Mat3::Identity() + 2 * g_slope * v_t * v_t.transpose());
   return r;
 }

@@ -126,14 +126,22 @@ NormalForceSlopes normal_force_slopes(const ContactDef& c, double delta, double 
 /// d friction_coefficient / dv at slip speed v >= 0.
 double friction_coefficient_slope(const ContactDef& c, double v);
 
-/// continuous_friction f(fn, v_t) with df/dfn and df/dv_t.
+/// What d_vt of FrictionSlopes holds: the tangent df/dv_t, or the secant -fn (mu(v)/v) I,
+/// which differs from it along the slip only (where the tangent is flatter: on the plateau of
+/// mu, not at all) and serves Newton as its iteration matrix (docs/solvers.md, "Friction's
+/// secant").
+enum class FrictionSlope { Tangent, Secant };
+
+/// continuous_friction f(fn, v_t) with df/dfn and df/dv_t (or its secant, `slope`).
 struct FrictionSlopes {
   Vec3 f = Vec3::Zero();
   Vec3 d_fn = Vec3::Zero();
   Mat3 d_vt = Mat3::Zero();
+  bool secant_differs = false;  ///< the secant was asked for and is not the tangent here
 };
 FrictionSlopes continuous_friction_slopes(const ContactDef& c, double fn, const Vec3& v_t,
-                                          double lag_speed = -1);
+                                          double lag_speed = -1,
+                                          FrictionSlope slope = FrictionSlope::Tangent);
 
 /// Contact parameters derived for a gram-scale part (docs/contact.md, "Choosing values").
 struct ContactSuggestion {

@@ -29,6 +29,12 @@ struct ForceJacobian {
   /// true: force elements differentiated automatically (the closed forms' test oracle,
   /// about 30 times slower) instead of by their closed-form Jacobians.
   bool autodiff = false;
+  /// true: Newton's iteration matrix wanted, in which continuous friction takes its secant
+  /// mu(v)/v along the slip, not its tangent (docs/solvers.md, "Friction's secant").
+  bool friction_secant = false;
+  /// Set by the evaluation: some friction point's secant differed from its tangent, so the
+  /// matrices are not the exact Jacobian.
+  bool secant_differs = false;
   /// Assembly scratch, kept between evaluations so that its storage is reused.
   BlockMatrix dq_blocks, dv_blocks;
 };

@@ -40,12 +40,17 @@ class Assembler {
     if (jac_) {
       jac_->dq_blocks.clear();
       jac_->dv_blocks.clear();
+      jac_->secant_differs = false;
     }
   }
 
   bool want_jacobian() const { return want_jacobian_; }
   bool want_velocity_jacobian() const { return want_velocity_; }
   bool autodiff_elements() const { return autodiff_elements_; }
+  /// Whether friction's blocks take their secant (ForceJacobian::friction_secant).
+  bool friction_secant() const { return jac_ != nullptr && jac_->friction_secant; }
+  /// Records that a secant differed from its tangent; sequential.
+  void mark_secant_differs() { jac_->secant_differs = true; }
   /// Plain kinematics of body i from the state.
   BodyKin<double> kin(int i) const {
     return {state_.p_W[i], state_.R_WB[i], state_.v_W[i], state_.w_W[i]};

@@ -74,7 +74,9 @@ class Linearisation {
         res_(res),
         state_(state),
         f_(f),
-        stats_(stats) {}
+        stats_(stats) {
+    jac_.friction_secant = false;
+  }
 
   // Places the state at x_at and evaluates r there (forces in f), and the matrix A when
   // `with_matrix` (the force Jacobian).
@@ -102,6 +104,15 @@ class Linearisation {
     right_multiply_rotation_columns(
         model_, pose_increment_jacobians(model_, map_.dq0 + map_.cq * x_at), pose);
     A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv + map_.cq * pose;
+    exact = !jac_.secant_differs;
+  }
+
+  // From here on the matrices take friction's secant (docs/solvers.md, "Friction's secant").
+  void take_friction_secant() {
+    const ContactDef& c = model_.contact;
+    if (!c.enabled || c.friction == FrictionModel::None || jac_.friction_secant) return;
+    ++stats_.secant_solves;
+    jac_.friction_secant = true;
   }
 
   // The converged end state at x, with its forces.
@@ -113,6 +124,9 @@ class Linearisation {
 
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> A;
+  // A is dr/dx; false where friction took its secant (docs/solvers.md, "Friction's secant"):
+  // then Newton's test alone does not bound the error left.
+  bool exact = true;
 
  private:
   void place(const Eigen::VectorXd& x) {
@@ -132,23 +146,27 @@ class Linearisation {
 // Backtracking on |r|: a full step that does not lower the residual is halved (at most
 // kHalvings times; the shortest is taken then). Without it Newton cycles for ever between the
 // two sides of a steep, saturating force such as regularised Coulomb friction, whose plateau's
-// tangent jumps the slip velocity across zero and back (docs/solvers.md). Moves x, evaluates
-// the full step with the matrix when `matrix_full`, and the point a halving ends at with it
-// (once that point is known: the tries on the way need only their residual); returns the
-// number of halvings.
+// tangent jumps the slip velocity across zero and back (docs/solvers.md). Where no halving
+// lowers it (many points thrown across their stick bands at once), the solve's matrices take
+// friction's secant from there on. Moves x, evaluates the full step with the matrix when
+// `matrix_full`, and the point a halving ends at with it (once that point is known: the tries
+// on the way need only their residual); returns the number of halvings.
 int backtrack(Linearisation& lin, const Eigen::VectorXd& dx, bool matrix_full, Eigen::VectorXd& x) {
   const double merit = lin.r.squaredNorm();
   constexpr int kHalvings = 5;
   double a = 1;
   Eigen::VectorXd x_try;
   int k = 0;
+  bool lowered = false;
   for (;; ++k) {
     x_try = x + a * dx;
     lin.at(x_try, k == 0 && matrix_full);
-    if (k == kHalvings || (lin.r.allFinite() && lin.r.squaredNorm() < merit)) break;
+    lowered = lin.r.allFinite() && lin.r.squaredNorm() < merit;
+    if (k == kHalvings || lowered) break;
     a *= 0.5;
   }
   x = x_try;
+  if (!lowered) lin.take_friction_secant();
   if (k > 0) lin.at(x, true);
   return k;
 }
@@ -252,7 +270,8 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
       k.eta = theta < 1 ? theta / (1 - theta) : INFINITY;
     }
     // Fresh and exact, Newton's test; else also the error left after the step.
-    if (step < pose_tol && ((fresh && (krylov || !k.approximate)) || k.eta * step < pose_tol)) {
+    const bool exact = fresh && lin.exact && (krylov || !k.approximate);
+    if (step < pose_tol && (exact || k.eta * step < pose_tol)) {
       x += dx;
       lin.finish(x);
       return true;
@@ -313,6 +332,7 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                            stats, *reuse);
   }
   lin.at(x, true);
+  double step_prev = 0;  // the last iteration's |cq dx|
   for (int it = 1; it <= max_iterations; ++it) {
     ++stats.newton_iterations;
     if (!lin.r.allFinite()) return false;
@@ -323,11 +343,16 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   : solve_with_volume_stiffness(lin.A, res.s * map.cq,
                                                 volume_stiffness(model, state), -lin.r, dx);
     if (!solved) return false;
-    if (map.cq * dx.lpNorm<Eigen::Infinity>() < pose_tol) {
+    const double step = map.cq * dx.lpNorm<Eigen::Infinity>();
+    // A secant's steps contract linearly: the error left is bounded by eta |dx| as above.
+    const double theta = step_prev > 0 ? step / step_prev : INFINITY;
+    const bool bounded = lin.exact || (theta < 1 && theta / (1 - theta) * step < pose_tol);
+    if (step < pose_tol && bounded) {
       x += dx;
       lin.finish(x);
       return true;
     }
+    step_prev = step;
     backtrack(lin, dx, true, x);
   }
   return false;

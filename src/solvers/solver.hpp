@@ -67,6 +67,7 @@ struct SolverStats {
   long factorizations = 0;     ///< implicit: factorizations of Newton's iteration matrix
   long krylov_steps = 0;       ///< implicit: new matrices solved by GMRES on a kept factor instead
   long krylov_iterations = 0;  ///< implicit: GMRES iterations, those of failed tries included
+  long secant_solves = 0;      ///< implicit: Newton solves gone on with friction's secant
   long settles = 0;            ///< static: limit points passed by pseudo-transient continuation
   double smallest_step = 0, largest_step = 0;
   double wall_seconds = 0;

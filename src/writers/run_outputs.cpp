@@ -66,6 +66,7 @@ nlohmann::json stats_json(const SolverStats& s) {
           {"factorizations", s.factorizations},
           {"krylov_steps", s.krylov_steps},
           {"krylov_iterations", s.krylov_iterations},
+          {"secant_solves", s.secant_solves},
           {"settles", s.settles},
           {"smallest_step_s", s.smallest_step},
           {"largest_step_s", s.largest_step},
