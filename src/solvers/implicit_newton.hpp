@@ -67,8 +67,8 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   NewtonReuse* reuse = nullptr);
 
 /// The residual r(x) of newton_solve and its iteration matrix dr/dx at x, `state` placed there
-/// (what each Newton iteration with a new matrix solves with; for tests and diagnostics);
-/// where continuous friction slides, its secant instead of its slope (docs/solvers.md).
+/// (what each Newton iteration with a new matrix solves with until a solve takes friction's
+/// secant, docs/solvers.md; for tests and diagnostics).
 void newton_linearisation(const Model& model, const State& start, double h, const AffineStep& map,
                           const NewtonResidual& res, const Eigen::VectorXd& x, State& state,
                           Eigen::VectorXd& r, Eigen::SparseMatrix<double>& A);
