@@ -2,11 +2,13 @@
 // slopes the secant takes against the law's closed form, and a step in which twelve plates stop
 // or slide on at once against Coulomb's law for one backward Euler step (v1 = v0 - h mu g
 // v0 / |v0| where that stays ahead, rest within the law's stick band where it does not), with
-// full and with modified Newton. The cone whose steps collapsed without the secant is
+// full and with modified Newton; and a solve that goes on with the secant stops within Newton's
+// tolerance of the root. The cone whose steps collapsed without the secant is
 // tests/test_cone_friction.cpp.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/SparseLU>
 #include <cmath>
 #include <vector>
 
@@ -123,6 +125,63 @@ TEST(FrictionSecant, ManyPlatesStoppingOrSlidingInOneStepMeetCoulomb) {
     reuse.max_age = max_age;
     ASSERT_TRUE(backward_euler_solve(s.model, s.start, kH, 50, 1e-12, v, end, f, stats, &reuse));
     expect_coulomb(s, end);
+  }
+}
+
+// Two plates stacked on a clamped one, thrown and spun against each other: a step in which
+// the tangent's halvings lower nothing, so the solve goes on with the secant, and stops on the
+// contraction bound. The exact Newton correction at the point it returns (tangent matrix, one
+// LU solve) must be below the pose tolerance too: the secant leaves no more error than
+// Newton's test would.
+Model stack_of_two() {
+  Model m;
+  m.gravity_W = Vec3(0, 0, -kG);
+  m.bodies.push_back(
+      test::plate("ground", 1, Vec3(0.6, 0.2, kThick), Vec3::Zero(), Mat3::Identity(), true));
+  m.contact = test::continuous_contact(suggest_contact(2 * kMass, kG, 1e-5), kMu, kMu);
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 p(0.001 * k, 0.0007 * k, kThick * (k + 1) - 1e-6 * (k + 1));
+    m.bodies.push_back(
+        test::plate(fmt::format("layer{}", k), kMass, Vec3(0.02 + 0.002 * k, 0.02, kThick), p));
+  }
+  m.finalize_dofs();
+  return m;
+}
+
+TEST(FrictionSecant, SolveStoppedOnTheSecantIsWithinNewtonsTolerance) {
+  const Model m = stack_of_two();
+  State start = initial_state(m);
+  const double c = 0.3 * kH * kMu * kG;  // 0.3 of the speed friction takes in a step
+  for (int k = 0; k < 2; ++k) {
+    start.v_W[k + 1] = c * Vec3(std::cos(2.1 * k), std::sin(2.1 * k), 0);
+    start.w_W[k + 1] = Vec3(0, 0, (k == 0 ? -1 : 1) * c / 0.01);
+  }
+  constexpr double kTol = 1e-9;  // m and rad
+  for (const int max_age : {1, 20}) {
+    SCOPED_TRACE(max_age);
+    Eigen::VectorXd v = velocity_vector(m, start);
+    State end;
+    BodyForces f;
+    SolverStats stats;
+    NewtonReuse reuse;
+    reuse.max_age = max_age;
+    ASSERT_TRUE(backward_euler_solve(m, start, kH, 50, kTol, v, end, f, stats, &reuse));
+    EXPECT_EQ(stats.secant_solves, 1);
+    AffineStep map;
+    map.dq0 = map.v0 = Eigen::VectorXd::Zero(m.num_dofs);
+    map.cq = kH;
+    map.cv = 1;
+    NewtonResidual res;
+    res.b = momentum(m, start);
+    res.s = kH;
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> A;
+    State at;
+    newton_linearisation(m, start, kH, map, res, v, at, r, A);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+    ASSERT_EQ(lu.info(), Eigen::Success);
+    const Eigen::VectorXd dx = lu.solve(-r);
+    EXPECT_LT(kH * dx.lpNorm<Eigen::Infinity>(), kTol);
   }
 }
 
