@@ -6,14 +6,19 @@
 //   EI w'''' - T w'' = 0, w(0) = w'(0) = 0, EI w''(L) = 0, EI w'''(L) - T w'(L) = -P
 //   => w(L) = (P / T) (L - tanh(lambda L) / lambda), lambda = sqrt(T / EI).
 // The default, isotropic gauge also holds the tip sideways, a spring k in parallel with the
-// tensioned strip: w(L) = P / (k + P / w_string(L)).
+// tensioned strip: w(L) = P / (k + P / w_string(L)). A pull-only gauge goes slack where the
+// point runs ahead of its target (a plate coasting at its own speed).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "cli_test_util.hpp"
+#include "contact_test_util.hpp"
+#include "elements/drive_gauge.hpp"
+#include "solvers/solver.hpp"
 
 namespace finseg {
 namespace drive_string_test {
@@ -104,6 +109,54 @@ TEST(DriveString, TheIsotropicGaugeHoldsTheTipSideways) {
     EXPECT_NEAR(p.deflection / ref, 1.0, 1e-2) << "T " << p.tension;
     EXPECT_LT(p.deflection, 0.2 * beam_column_deflection(p.tension)) << "T " << p.tension;
   }
+}
+
+// `pull_only: true` (a string): a free 1 g plate thrown along the drive at three times the
+// target's speed runs ahead of it, where a string goes slack: no force, so the plate coasts,
+// x = v0 t to round-off. The two-way gauge holds it back instead (about the target, within
+// the amplitude (v0 - V) / omega of its oscillation, omega = sqrt(k / m)).
+struct Thrown {
+  double x = 0, largest_force = 0;
+};
+
+Thrown thrown_ahead(bool pull_only) {
+  Model m;
+  m.gravity_W = Vec3::Zero();
+  m.bodies.push_back(test::plate("plate", 1e-3, Vec3(0.02, 0.02, 1e-4), Vec3::Zero()));
+  DriveDef d;
+  d.name = "string";
+  d.body = 0;
+  d.direction_W = Vec3::UnitX();
+  d.stiffness = 10;
+  d.lateral_ratio = 0;
+  d.pull_only = pull_only;
+  d.speed = 0.01;
+  d.travel = 1;
+  d.step = 0.01;
+  m.drives.push_back(d);
+  m.finalize_dofs();
+  State s = initial_state(m);
+  s.v_W[0] = Vec3(0.03, 0, 0);
+  SolverSettings set;
+  set.kind = SolverKind::Implicit;
+  set.t_end = 0.5;
+  set.output_interval = 0.01;
+  Thrown r;
+  const SolverStats stats = run_solver(m, s, set, [&](const State& at, const BodyForces&) {
+    r.largest_force = std::max(r.largest_force, drive_force(m, at, 0).norm());
+  });
+  EXPECT_EQ(stats.status, "ok") << stats.message;
+  r.x = s.p_W[0].x();
+  return r;
+}
+
+TEST(DriveString, APullOnlyGaugeGoesSlackWhereThePointRunsAhead) {
+  const Thrown slack = thrown_ahead(true), held = thrown_ahead(false);
+  EXPECT_NEAR(slack.x, 0.03 * 0.5, 1e-12);
+  EXPECT_EQ(slack.largest_force, 0);
+  // Held at the target's 5 mm, within the oscillation's amplitude (v0 - V) / omega = 0.2 mm.
+  EXPECT_NEAR(held.x, 0.01 * 0.5, 2e-4);
+  EXPECT_GT(held.largest_force, 0);
 }
 
 TEST(DriveString, ANegativeLateralStiffnessIsRefused) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "elements/assemble.hpp"
+#include "elements/drive_gauge.hpp"
 #include "elements/element_jacobian.hpp"
 #include "generators/sheet.hpp"
 #include "generators/zigzag.hpp"
@@ -120,6 +121,23 @@ TEST(ElementJacobian, DriveGaugeAgreesWithAutodiff) {
       SCOPED_TRACE(lateral);
       expect_closed_form_matches_autodiff(m, st);
     }
+  }
+  // A pull-only gauge (a string) taut (the target 4 mm ahead) and slack (4 mm behind: the
+  // point ahead of it), with its lateral part.
+  m.drives[0].pull_only = true;
+  m.drives[0].lateral_ratio = 0.3;
+  for (const double s : {4e-3, -4e-3}) {
+    State st = initial_state(m);
+    st.drive_s.assign(1, s);
+    perturb(m, st, 0.05);
+    SCOPED_TRACE(s);
+    const double along = drive_force(m, st, 0).dot(m.drives[0].direction_W);
+    if (s > 0) {
+      EXPECT_GT(along, 0);
+    } else {
+      EXPECT_NEAR(along, 0, 1e-12);
+    }
+    expect_closed_form_matches_autodiff(m, st);
   }
 }
 

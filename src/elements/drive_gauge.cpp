@@ -18,14 +18,28 @@ Target target_of(const DriveDef& d, const State& state, int i) {
 }
 
 // The gauge's stiffness K and damping C: k and c along direction_W, lateral_ratio times them
-// across it.
+// across it; a pull-only gauge has none along it where its force there would hold the point
+// back (slack). The side is decided on the state's values, so that the Jacobian is the
+// derivative of the branch taken.
 struct GaugeAxes {
   Mat3 K, C;
 };
 
-GaugeAxes gauge_axes(const DriveDef& d) {
+bool slack(const DriveDef& d, const Target& tgt, const State& s) {
+  if (!d.pull_only) return false;
+  const Vec3 r = s.R_WB[d.body] * d.point_B;
+  const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
   const Vec3& n = d.direction_W;
-  const Mat3 axes = d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * n * n.transpose();
+  const double stretch = n.dot(s.p_W[d.body] + r - tgt.x_W), rate = n.dot(v_P - tgt.v_W);
+  return -d.stiffness * stretch - d.damping * rate < 0;
+}
+
+GaugeAxes gauge_axes(const DriveDef& d, const Target& tgt, const State& s) {
+  const Vec3& n = d.direction_W;
+  const Mat3 nn = n * n.transpose();
+  const Mat3 axes = slack(d, tgt, s)
+                        ? Mat3(d.lateral_ratio * (Mat3::Identity() - nn))
+                        : Mat3(d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * nn);
   return {d.stiffness * axes, d.damping * axes};
 }
 
@@ -41,7 +55,7 @@ Vec3 gauge_force(const DriveDef& d, const GaugeAxes& g, const Target& tgt, const
 
 void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assembler& as) {
   const Vec3 r = s.R_WB[d.body] * d.point_B, stretch = s.p_W[d.body] + r - tgt.x_W;
-  const GaugeAxes g = gauge_axes(d);
+  const GaugeAxes g = gauge_axes(d, tgt, s);
   const Mat3 &K = g.K, &C = g.C;
   const Vec3 f = gauge_force(d, g, tgt, s);
   as.add(d.body, {f, r.cross(f)});
@@ -61,7 +75,8 @@ void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assem
 
 Vec3 drive_force(const Model& model, const State& state, int i) {
   const DriveDef& d = model.drives[i];
-  return gauge_force(d, gauge_axes(d), target_of(d, state, i), state);
+  const Target tgt = target_of(d, state, i);
+  return gauge_force(d, gauge_axes(d, tgt, state), tgt, state);
 }
 
 void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
@@ -76,7 +91,7 @@ void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
       using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
       const Vec3T<T> P = A.point_W(d.point_B);
       const Vec3T<T> stretch = P - tgt.x_W.cast<T>();
-      const GaugeAxes g = gauge_axes(d);
+      const GaugeAxes g = gauge_axes(d, tgt, state);
       const Mat3T<T> K = g.K.cast<T>(), C = g.C.cast<T>();
       const Vec3T<T> f = -K * stretch - C * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
       w.add_force_at(f, P, A.p_W);

@@ -76,6 +76,9 @@ struct DriveDef {
   /// Stiffness and damping across direction_W over those along it: 1 an isotropic gauge, 0 a
   /// long string that pulls along direction_W and lets the point move sideways.
   double lateral_ratio = 1;
+  /// A string: the gauge pulls along direction_W but never holds the point back; where its
+  /// force along direction_W would, it is slack there (the lateral part stays).
+  bool pull_only = false;
   double speed = 0;   ///< dynamic solvers: ds/dt, m/s
   double travel = 0;  ///< total drive displacement, m
   double step = 0;    ///< quasi-static solver: displacement increment, m
