@@ -17,6 +17,17 @@ Target target_of(const DriveDef& d, const State& state, int i) {
   return {d.start_W + state.drive_s[i] * d.direction_W, rate * d.direction_W};
 }
 
+// Where the gauge's point is against its target: x - X and v + w x r - V, world frame.
+struct GaugeMotion {
+  Vec3 stretch, rate;
+};
+
+GaugeMotion gauge_motion(const DriveDef& d, const Target& tgt, const State& s) {
+  const Vec3 r = s.R_WB[d.body] * d.point_B;
+  const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
+  return {s.p_W[d.body] + r - tgt.x_W, v_P - tgt.v_W};
+}
+
 // The gauge's stiffness K and damping C: k and c along direction_W, lateral_ratio times them
 // across it; a pull-only gauge has none along it where its force there would hold the point
 // back (slack). The side is decided on the state's values, so that the Jacobian is the
@@ -25,21 +36,12 @@ struct GaugeAxes {
   Mat3 K, C;
 };
 
-bool slack(const DriveDef& d, const Target& tgt, const State& s) {
-  if (!d.pull_only) return false;
-  const Vec3 r = s.R_WB[d.body] * d.point_B;
-  const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
-  const Vec3& n = d.direction_W;
-  const double stretch = n.dot(s.p_W[d.body] + r - tgt.x_W), rate = n.dot(v_P - tgt.v_W);
-  return -d.stiffness * stretch - d.damping * rate < 0;
-}
-
-GaugeAxes gauge_axes(const DriveDef& d, const Target& tgt, const State& s) {
+GaugeAxes gauge_axes(const DriveDef& d, const GaugeMotion& m) {
   const Vec3& n = d.direction_W;
   const Mat3 nn = n * n.transpose();
-  const Mat3 axes = slack(d, tgt, s)
-                        ? Mat3(d.lateral_ratio * (Mat3::Identity() - nn))
-                        : Mat3(d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * nn);
+  const bool slack = d.pull_only && -d.stiffness * n.dot(m.stretch) - d.damping * n.dot(m.rate) < 0;
+  const Mat3 axes = slack ? Mat3(d.lateral_ratio * (Mat3::Identity() - nn))
+                          : Mat3(d.lateral_ratio * Mat3::Identity() + (1 - d.lateral_ratio) * nn);
   return {d.stiffness * axes, d.damping * axes};
 }
 
@@ -47,17 +49,17 @@ GaugeAxes gauge_axes(const DriveDef& d, const Target& tgt, const State& s) {
 // centroid. With dx = dp - [r]x dphi and d(w x r) = -[w]x [r]x dphi + ... (world-frame
 // increments): df/dp = -K, df/dphi = K [r]x + C [w]x [r]x, dm = -[f]x dr + [r]x df;
 // df/dv = -C, df/dw = C [r]x.
-Vec3 gauge_force(const DriveDef& d, const GaugeAxes& g, const Target& tgt, const State& s) {
-  const Vec3 r = s.R_WB[d.body] * d.point_B;
-  const Vec3 v_P = s.v_W[d.body] + s.w_W[d.body].cross(r);
-  return -g.K * (s.p_W[d.body] + r - tgt.x_W) - g.C * (v_P - tgt.v_W);
+Vec3 gauge_force(const GaugeAxes& g, const GaugeMotion& m) {
+  return -g.K * m.stretch - g.C * m.rate;
 }
 
 void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assembler& as) {
-  const Vec3 r = s.R_WB[d.body] * d.point_B, stretch = s.p_W[d.body] + r - tgt.x_W;
-  const GaugeAxes g = gauge_axes(d, tgt, s);
+  const Vec3 r = s.R_WB[d.body] * d.point_B;
+  const GaugeMotion m = gauge_motion(d, tgt, s);
+  const Vec3& stretch = m.stretch;
+  const GaugeAxes g = gauge_axes(d, m);
   const Mat3 &K = g.K, &C = g.C;
-  const Vec3 f = gauge_force(d, g, tgt, s);
+  const Vec3 f = gauge_force(g, m);
   as.add(d.body, {f, r.cross(f)});
   as.add_energy(0.5 * stretch.dot(K * stretch));
   const Mat3 hr = hat(r);
@@ -75,8 +77,8 @@ void add_closed_form(const DriveDef& d, const Target& tgt, const State& s, Assem
 
 Vec3 drive_force(const Model& model, const State& state, int i) {
   const DriveDef& d = model.drives[i];
-  const Target tgt = target_of(d, state, i);
-  return gauge_force(d, gauge_axes(d, tgt, state), tgt, state);
+  const GaugeMotion m = gauge_motion(d, target_of(d, state, i), state);
+  return gauge_force(gauge_axes(d, m), m);
 }
 
 void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
@@ -91,7 +93,7 @@ void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
       using T = typename std::decay_t<decltype(A.p_W)>::Scalar;
       const Vec3T<T> P = A.point_W(d.point_B);
       const Vec3T<T> stretch = P - tgt.x_W.cast<T>();
-      const GaugeAxes g = gauge_axes(d, tgt, state);
+      const GaugeAxes g = gauge_axes(d, gauge_motion(d, tgt, state));
       const Mat3T<T> K = g.K.cast<T>(), C = g.C.cast<T>();
       const Vec3T<T> f = -K * stretch - C * (A.point_velocity_W(d.point_B) - tgt.v_W.cast<T>());
       w.add_force_at(f, P, A.p_W);

@@ -1,7 +1,7 @@
 // The gauge spring of a drive (paper: the force gauge between the slide and the sheet): a
-// spring and damper (isotropic, or softer across its direction: a string) from a body point to
-// the drive's moving target, with its closed-form Jacobian (docs/solvers.md, "Closed-form
-// Jacobians").
+// spring and damper (isotropic, or softer across its direction: a string, which may also be
+// pull-only and go slack) from a body point to the drive's moving target, with its closed-form
+// Jacobian (docs/solvers.md, "Closed-form Jacobians").
 #pragma once
 
 #include "model/model.hpp"
