@@ -14,6 +14,7 @@
 
 #include "collision/contact_laws.hpp"
 #include "contact_test_util.hpp"
+#include "newton_test_util.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/implicit_newton.hpp"
 
@@ -73,13 +74,21 @@ struct Scattered {
   std::vector<double> speed_ratio;
 };
 
-Scattered scattered_plates() {
-  Scattered s;
-  Model& m = s.model;
+// A clamped plate under gravity with continuous friction mu_s = mu_d = kMu, its contact
+// suggested for `load` kg resting on it.
+Model ground(double load) {
+  Model m;
   m.gravity_W = Vec3(0, 0, -kG);
   m.bodies.push_back(
       test::plate("ground", 1, Vec3(0.6, 0.2, kThick), Vec3::Zero(), Mat3::Identity(), true));
-  m.contact = test::continuous_contact(suggest_contact(kMass, kG, 1e-5), kMu, kMu);
+  m.contact = test::continuous_contact(suggest_contact(load, kG, 1e-5), kMu, kMu);
+  return m;
+}
+
+Scattered scattered_plates() {
+  Scattered s;
+  s.model = ground(kMass);
+  Model& m = s.model;
   const double delta0 = std::pow(kMass * kG / m.contact.stiffness, 1 / m.contact.exponent);
   s.speed_ratio = {0.3, 1.3, 0.55, 2.0, 0.8, 1.6, 0.95, 1.1, 0.4, 1.8, 0.7, 1.45};
   for (std::size_t k = 0; k < s.speed_ratio.size(); ++k) {
@@ -117,14 +126,11 @@ TEST(FrictionSecant, ManyPlatesStoppingOrSlidingInOneStepMeetCoulomb) {
   for (const int max_age : {1, 20}) {
     SCOPED_TRACE(max_age);
     const Scattered s = scattered_plates();
-    Eigen::VectorXd v = velocity_vector(s.model, s.start);
-    State end;
-    BodyForces f;
-    SolverStats stats;
     NewtonReuse reuse;
     reuse.max_age = max_age;
-    ASSERT_TRUE(backward_euler_solve(s.model, s.start, kH, 50, 1e-12, v, end, f, stats, &reuse));
-    expect_coulomb(s, end);
+    const test::Step step = test::backward_euler(s.model, s.start, kH, 1e-12, &reuse);
+    ASSERT_TRUE(step.converged);
+    expect_coulomb(s, step.end);
   }
 }
 
@@ -134,11 +140,7 @@ TEST(FrictionSecant, ManyPlatesStoppingOrSlidingInOneStepMeetCoulomb) {
 // LU solve) must be below the pose tolerance too: the secant leaves no more error than
 // Newton's test would.
 Model stack_of_two() {
-  Model m;
-  m.gravity_W = Vec3(0, 0, -kG);
-  m.bodies.push_back(
-      test::plate("ground", 1, Vec3(0.6, 0.2, kThick), Vec3::Zero(), Mat3::Identity(), true));
-  m.contact = test::continuous_contact(suggest_contact(2 * kMass, kG, 1e-5), kMu, kMu);
+  Model m = ground(2 * kMass);
   for (int k = 0; k < 2; ++k) {
     const Vec3 p(0.001 * k, 0.0007 * k, kThick * (k + 1) - 1e-6 * (k + 1));
     m.bodies.push_back(
@@ -159,14 +161,11 @@ TEST(FrictionSecant, SolveStoppedOnTheSecantIsWithinNewtonsTolerance) {
   constexpr double kTol = 1e-9;  // m and rad
   for (const int max_age : {1, 20}) {
     SCOPED_TRACE(max_age);
-    Eigen::VectorXd v = velocity_vector(m, start);
-    State end;
-    BodyForces f;
-    SolverStats stats;
     NewtonReuse reuse;
     reuse.max_age = max_age;
-    ASSERT_TRUE(backward_euler_solve(m, start, kH, 50, kTol, v, end, f, stats, &reuse));
-    EXPECT_EQ(stats.secant_solves, 1);
+    const test::Step step = test::backward_euler(m, start, kH, kTol, &reuse);
+    ASSERT_TRUE(step.converged);
+    EXPECT_EQ(step.stats.secant_solves, 1);
     AffineStep map;
     map.dq0 = map.v0 = Eigen::VectorXd::Zero(m.num_dofs);
     map.cq = kH;
@@ -177,7 +176,7 @@ TEST(FrictionSecant, SolveStoppedOnTheSecantIsWithinNewtonsTolerance) {
     Eigen::VectorXd r;
     Eigen::SparseMatrix<double> A;
     State at;
-    newton_linearisation(m, start, kH, map, res, v, at, r, A);
+    newton_linearisation(m, start, kH, map, res, step.v, at, r, A);
     Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
     ASSERT_EQ(lu.info(), Eigen::Success);
     const Eigen::VectorXd dx = lu.solve(-r);

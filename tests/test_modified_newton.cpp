@@ -9,6 +9,7 @@
 #include "collision/contact_laws.hpp"
 #include "contact_test_util.hpp"
 #include "generators/cantilever.hpp"
+#include "newton_test_util.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/implicit_newton.hpp"
 #include "solvers/linear_solve.hpp"
@@ -17,22 +18,8 @@
 namespace finseg {
 namespace modified_newton_test {
 
-// One backward-Euler step of h from `start`: the end velocity, the end state in `end`.
-struct Step {
-  Eigen::VectorXd v;
-  State end;
-  SolverStats stats;
-  bool converged = false;
-};
-
-Step backward_euler(const Model& model, const State& start, double h, double pose_tol,
-                    NewtonReuse* reuse) {
-  Step s;
-  s.v = velocity_vector(model, start);
-  BodyForces f;
-  s.converged = backward_euler_solve(model, start, h, 50, pose_tol, s.v, s.end, f, s.stats, reuse);
-  return s;
-}
+using test::backward_euler;
+using test::Step;
 
 // The stocky strip of the solver agreement test, clamped, loaded at its tip from rest.
 Model loaded_strip() {

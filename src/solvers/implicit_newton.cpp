@@ -76,6 +76,7 @@ class Linearisation {
         f_(f),
         stats_(stats) {
     jac_.friction_secant = false;
+    jac_.secant_differs = false;  // the scratch may hold the last solve's
   }
 
   // Places the state at x_at and evaluates r there (forces in f), and the matrix A when
@@ -104,8 +105,12 @@ class Linearisation {
     right_multiply_rotation_columns(
         model_, pose_increment_jacobians(model_, map_.dq0 + map_.cq * x_at), pose);
     A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv + map_.cq * pose;
-    exact = !jac_.secant_differs;
   }
+
+  // A is dr/dx; false where friction took its secant (docs/solvers.md, "Friction's secant"):
+  // then Newton's test alone does not bound the error left. (Only an evaluation with the
+  // matrix sets the flag.)
+  bool exact() const { return !jac_.secant_differs; }
 
   // From here on the matrices take friction's secant (docs/solvers.md, "Friction's secant").
   void take_friction_secant() {
@@ -124,9 +129,6 @@ class Linearisation {
 
   Eigen::VectorXd r;
   Eigen::SparseMatrix<double> A;
-  // A is dr/dx; false where friction took its secant (docs/solvers.md, "Friction's secant"):
-  // then Newton's test alone does not bound the error left.
-  bool exact = true;
 
  private:
   void place(const Eigen::VectorXd& x) {
@@ -179,6 +181,12 @@ constexpr double kTheta = 0.8;
 // ... and while s cq and s cv (the step size) stay within this ratio of those it was made
 // with: for backward Euler h within 1.22 of it.
 constexpr double kCoefficientRatio = 1.5;
+
+// The error left after a step |dx| on a matrix that contracts at rate theta is at most
+// eta |dx|, eta = theta / (1 - theta) (Hairer & Wanner IV.8); theta >= 1, no bound.
+double error_factor(double theta) {
+  return theta < 1 ? theta / (1 - theta) : INFINITY;
+}
 
 bool near(double a, double b) {
   return a == b || (a * b > 0 && std::abs(std::log(a / b)) <= std::log(kCoefficientRatio));
@@ -263,14 +271,10 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
     }
     ++k.age;
     const double step = map.cq * dx.lpNorm<Eigen::Infinity>();
-    // Contraction rate theta = |dx_k| / |dx_k-1| on one matrix: eta |dx_k| bounds the error
-    // left after the step (Hairer & Wanner IV.8); unknown, or theta >= 1, no bound.
-    if (!fresh && dx_prev > 0) {
-      const double theta = step / dx_prev;
-      k.eta = theta < 1 ? theta / (1 - theta) : INFINITY;
-    }
+    // Contraction rate theta = |dx_k| / |dx_k-1| on one matrix.
+    if (!fresh && dx_prev > 0) k.eta = error_factor(step / dx_prev);
     // Fresh and exact, Newton's test; else also the error left after the step.
-    const bool exact = fresh && lin.exact && (krylov || !k.approximate);
+    const bool exact = fresh && lin.exact() && (krylov || !k.approximate);
     if (step < pose_tol && (exact || k.eta * step < pose_tol)) {
       x += dx;
       lin.finish(x);
@@ -345,8 +349,8 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
     if (!solved) return false;
     const double step = map.cq * dx.lpNorm<Eigen::Infinity>();
     // A secant's steps contract linearly: the error left is bounded by eta |dx| as above.
-    const double theta = step_prev > 0 ? step / step_prev : INFINITY;
-    const bool bounded = lin.exact || (theta < 1 && theta / (1 - theta) * step < pose_tol);
+    const bool bounded =
+        lin.exact() || (step_prev > 0 && error_factor(step / step_prev) * step < pose_tol);
     if (step < pose_tol && bounded) {
       x += dx;
       lin.finish(x);
