@@ -167,5 +167,16 @@ TEST(DriveString, ANegativeLateralStiffnessIsRefused) {
   EXPECT_NE(r.err.find("drives[0].lateral_stiffness"), std::string::npos) << r.err;
 }
 
+// A toe band is a string's: negative, or on a two-way gauge, it is refused by name.
+TEST(DriveString, AToeForceOnlyForAPullOnlyStringAndNotNegative) {
+  TempDir dir;
+  for (const char* keys : {", toe_force: 0.1", ", pull_only: true, toe_force: -0.1"}) {
+    spit(dir / "s.yaml", strip(4, keys));
+    const auto r = run_finseg(dir, "run s.yaml --out out --quiet");
+    EXPECT_NE(r.code, 0) << keys;
+    EXPECT_NE(r.err.find("drives[0].toe_force"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace drive_string_test
 }  // namespace finseg

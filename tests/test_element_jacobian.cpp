@@ -139,6 +139,29 @@ TEST(ElementJacobian, DriveGaugeAgreesWithAutodiff) {
     }
     expect_closed_form_matches_autodiff(m, st);
   }
+  // The string with a toe band of 1 N: taut, in the toe on both sides of zero and slack; the
+  // tension along the direction is max(0, u) outside the band and (u + b)^2 / (4 b) in it, u
+  // the two-way gauge's pull -k n.(x - X) - c n.(v - V).
+  DriveDef& g = m.drives[0];
+  g.toe_force = 1.0;
+  int in_toe = 0;
+  for (const double s : {8e-3, 3e-3, 1e-3, -1e-3, -3e-3, -8e-3}) {
+    State st = initial_state(m);
+    st.drive_s.assign(1, s);
+    perturb(m, st, 0.05);
+    SCOPED_TRACE(s);
+    const Vec3 r = st.R_WB[g.body] * g.point_B;
+    const Vec3 x = st.p_W[g.body] + r, v = st.v_W[g.body] + st.w_W[g.body].cross(r);
+    const Vec3& n = g.direction_W;
+    const double u =
+        -g.stiffness * n.dot(x - g.start_W - s * n) - g.damping * n.dot(v - g.speed * n);
+    const double b = g.toe_force;
+    const double tension = u >= b ? u : u <= -b ? 0.0 : (u + b) * (u + b) / (4 * b);
+    EXPECT_NEAR(drive_force(m, st, 0).dot(n), tension, 1e-12);
+    expect_closed_form_matches_autodiff(m, st);
+    in_toe += std::abs(u) < b;
+  }
+  EXPECT_EQ(in_toe, 4);  // the cases cover the band on both sides and both outsides
 }
 
 TEST(ElementJacobian, RotationalSpringDerivativeMatchesCentralDifferences) {

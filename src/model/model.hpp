@@ -79,6 +79,9 @@ struct DriveDef {
   /// A string: the gauge pulls along direction_W but never holds the point back; where its
   /// force along direction_W would, it is slack there (the lateral part stays).
   bool pull_only = false;
+  /// Pull-only: the band of the two-way pull u (N) over which the tension eases in, (u + b)^2 /
+  /// (4 b) for |u| < b, so that Newton meets no kink; 0: max(0, u).
+  double toe_force = 0;
   double speed = 0;   ///< dynamic solvers: ds/dt, m/s
   double travel = 0;  ///< total drive displacement, m
   double step = 0;    ///< quasi-static solver: displacement increment, m

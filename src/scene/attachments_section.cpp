@@ -83,7 +83,7 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
   for (std::size_t i = 0; i < items.size(); ++i) {
     const Fields f(items[i], {root.context().file, item_field("drives", i)},
                    {"name", "at", "body", "point", "direction", "stiffness", "lateral_stiffness",
-                    "pull_only", "damping", "speed", "travel", "step", "deployed_at"});
+                    "pull_only", "toe_force", "damping", "speed", "travel", "step", "deployed_at"});
     DriveDef d;
     d.name = f.required_word("name");
     for (const DriveDef& other : m.drives) {
@@ -100,6 +100,8 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
     d.stiffness = f.number("stiffness", positive("N/m"));
     d.lateral_ratio = f.number("lateral_stiffness", d.stiffness, non_negative("N/m")) / d.stiffness;
     d.pull_only = f.flag("pull_only", false);
+    d.toe_force = f.number("toe_force", 0.0, non_negative("N"));
+    if (d.toe_force > 0 && !d.pull_only) f.fail("toe_force", "applies to pull_only: true drives");
     d.damping = f.number("damping", 0.0, non_negative("N s/m"));
     d.travel = f.number("travel", 0.0, non_negative("m"));
     d.step = f.number("step", 0.0, non_negative("m"));
