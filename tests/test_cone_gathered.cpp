@@ -199,15 +199,18 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
     }
   }
   // The shipped examples: apart, with the generator's contact stiffness for its pull, the ends
-  // drawn apart by 22 drives: F = one gauge's largest pull (stiffness x travel); inflated, by
-  // strings (free across the axis) round the chamber of the wall.
-  for (const char* file : {"reflected.yaml", "reflected_inflate.yaml"}) {
+  // drawn apart by a drive on each end band's whole facet (2 (2 pleats - 1)): F = one gauge's
+  // largest pull (stiffness x travel); inflated, by strings (free across the axis) round the
+  // chamber of the wall. lab_inflate.yaml is the cone (12 pleats, 6 axial folds).
+  const std::pair<const char*, std::size_t> examples[] = {
+      {"reflected.yaml", 22}, {"reflected_inflate.yaml", 22}, {"lab_inflate.yaml", 46}};
+  for (const auto& [file, drives] : examples) {
     SCOPED_TRACE(file);
     const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
-    ASSERT_EQ(scene.model.drives.size(), 22u);
+    ASSERT_EQ(scene.model.drives.size(), drives);
     const DriveDef& gauge = scene.model.drives[0];
     expect_example_start(scene.model, gauge.stiffness * gauge.travel);
-    const bool inflated = std::string(file) == "reflected_inflate.yaml";
+    const bool inflated = std::string(file) != "reflected.yaml";
     EXPECT_EQ(scene.model.chambers.size(), inflated ? 1u : 0u);
     for (const DriveDef& d : scene.model.drives) EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);
   }
