@@ -68,6 +68,7 @@ inline void expect_same_model(const Model& a, const Model& b) {
     EXPECT_EQ(x.stiffness, y.stiffness);
     EXPECT_EQ(x.lateral_ratio, y.lateral_ratio);
     EXPECT_EQ(x.pull_only, y.pull_only);
+    EXPECT_EQ(x.toe_force, y.toe_force);
     EXPECT_EQ(x.damping, y.damping);
     EXPECT_EQ(x.speed, y.speed);
     EXPECT_EQ(x.travel, y.travel);

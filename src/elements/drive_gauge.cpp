@@ -69,6 +69,12 @@ T string_energy(const DriveDef& d, const Vec3T<T>& stretch) {
          string_energy_k(T(-d.stiffness * along), d.toe_force) / d.stiffness;
 }
 
+// The gauge's axes across direction_W, lateral_ratio (I - n n^T): its stiffness and damping
+// there over k and c.
+Mat3 lateral_axes(const DriveDef& d) {
+  return d.lateral_ratio * (Mat3::Identity() - d.direction_W * d.direction_W.transpose());
+}
+
 // The gauge's force f and its derivatives K = -df/dx, C = -df/dv: k and c along direction_W,
 // lateral_ratio times them across it; a pull-only gauge's part along it is its tension (slack
 // where it would hold the point back). The side is decided on the state's values, so that the
@@ -84,7 +90,7 @@ GaugeAxes gauge_axes(const DriveDef& d, const GaugeMotion& m) {
   const Mat3 nn = n * n.transpose();
   const double u = -d.stiffness * n.dot(m.stretch) - d.damping * n.dot(m.rate);
   const double slope = d.pull_only ? string_slope(u, d.toe_force) : 1.0;
-  const Mat3 across = d.lateral_ratio * (Mat3::Identity() - nn);
+  const Mat3 across = lateral_axes(d);
   if (slope == 1 || slope == 0) {
     // Outside the toe the force is linear in the motion (the two-way gauge's arithmetic).
     const Mat3 axes =
@@ -149,9 +155,7 @@ void add_drive_gauges(const Model& model, const State& state, Assembler& as) {
       }
       // The string: its lateral part, and its tension along direction_W.
       const Vec3T<T> n = d.direction_W.cast<T>();
-      const Mat3T<T> across =
-          (d.lateral_ratio * (Mat3::Identity() - d.direction_W * d.direction_W.transpose()))
-              .cast<T>();
+      const Mat3T<T> across = lateral_axes(d).cast<T>();
       const T u = -d.stiffness * n.dot(stretch) - d.damping * n.dot(rate);
       const Vec3T<T> f = -d.stiffness * (across * stretch) - d.damping * (across * rate) +
                          string_tension(u, d.toe_force) * n;

@@ -137,8 +137,11 @@ void validate(const Model& m) {
     if (!(d.lateral_ratio >= 0) || !std::isfinite(d.lateral_ratio)) {
       throw InputError(m.source, f + ".lateral_stiffness", "must be finite and >= 0 N/m");
     }
-    if (!(d.toe_force >= 0) || !std::isfinite(d.toe_force) || (d.toe_force > 0 && !d.pull_only)) {
-      throw InputError(m.source, f + ".toe_force", "must be finite and >= 0 N, > 0 only pull-only");
+    if (!(d.toe_force >= 0) || !std::isfinite(d.toe_force)) {
+      throw InputError(m.source, f + ".toe_force", "must be finite and >= 0 N");
+    }
+    if (d.toe_force > 0 && !d.pull_only) {
+      throw InputError(m.source, f + ".toe_force", "applies to pull_only: true drives only");
     }
     if (std::abs(d.direction_W.norm() - 1.0) > 1e-9) {
       throw InputError(m.source, f + ".direction", "must be a unit vector");

@@ -101,7 +101,6 @@ void read_drives(const Fields& root, bool zigzag, Model& m) {
     d.lateral_ratio = f.number("lateral_stiffness", d.stiffness, non_negative("N/m")) / d.stiffness;
     d.pull_only = f.flag("pull_only", false);
     d.toe_force = f.number("toe_force", 0.0, non_negative("N"));
-    if (d.toe_force > 0 && !d.pull_only) f.fail("toe_force", "applies to pull_only: true drives");
     d.damping = f.number("damping", 0.0, non_negative("N s/m"));
     d.travel = f.number("travel", 0.0, non_negative("m"));
     d.step = f.number("step", 0.0, non_negative("m"));
