@@ -4,8 +4,8 @@
 // contact's samples), so no contact force acts at the start; the fan stack, whose facets
 // coincide, fails the same check (the reason it cannot start with contact on); and the
 // shipped examples/cone/gathered.yaml and inflate.yaml are such starts, with the contact
-// stiffness of the generator's rule (docs/folding.md, "Contact stiffness"); pulled with contact
-// on, the layers that meet stay apart to within the issue's quarter thickness.
+// stiffness of the generator's rule (docs/folding.md, "Contact of the generated scenes"); pulled
+// with contact on, the layers that meet stay apart to within the issue's quarter thickness.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -147,15 +147,19 @@ Model cone_model(const std::vector<Vec3>& folded, int n, const ConeSpec& s = lab
 }
 
 // A shipped example scene `m`: contact on, no pair closer than the thickness, no contact
-// point at the start, and the generator's contact stiffness: one face carrying the reference
-// force sinks a quarter of the thickness, F = K (t/4)^1.5 (docs/folding.md, "Contact stiffness
-// of the generated scenes").
+// point at the start, and the generator's contact: one face carrying the reference force sinks
+// a quarter of the thickness, F = K (t/4)^1.5, and its anchor friction's spring carries
+// mu_s F at a quarter of the thickness of slip (docs/folding.md, "Contact of the generated
+// scenes").
 void expect_example_start(const Model& m, double force) {
   ASSERT_TRUE(m.contact.enabled);
   EXPECT_GE(least_gap(m).gap, 0);
   EXPECT_EQ(contact_summary(m, initial_state(m)).active, 0);
   const double t = m.bodies.front().thickness;
   EXPECT_NEAR(m.contact.stiffness * std::pow(0.25 * t, 1.5), force, 1e-3 * force);
+  EXPECT_EQ(m.contact.friction, FrictionModel::Anchor);
+  EXPECT_NEAR(m.contact.tangential_stiffness * 0.25 * t, m.contact.mu_static * force,
+              1e-3 * m.contact.mu_static * force);
 }
 
 TEST(ConeGathered, NoPairStartsInContact) {
@@ -200,8 +204,9 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
   }
   // The shipped examples: apart, with the generator's contact stiffness for its pull, the ends
   // drawn apart by a drive on each end band's whole facet (2 (2 pleats - 1)): F = one gauge's
-  // largest pull (stiffness x travel); inflated, by strings (free across the axis) round the
-  // chamber of the wall. lab_inflate.yaml is the issue's cone (12 pleats, 6 axial folds).
+  // largest pull (stiffness x travel); inflated, by strings (free across the axis, slack when
+  // pushed, a toe of 3 % of F) round the chamber of the wall. lab_inflate.yaml is the issue's
+  // cone (12 pleats, 6 axial folds).
   const std::pair<const char*, std::size_t> examples[] = {
       {"reflected.yaml", 22}, {"reflected_inflate.yaml", 22}, {"lab_inflate.yaml", 46}};
   for (const auto& [file, drives] : examples) {
@@ -212,7 +217,11 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
     expect_example_start(scene.model, gauge.stiffness * gauge.travel);
     const bool inflated = std::string(file) != "reflected.yaml";
     EXPECT_EQ(scene.model.chambers.size(), inflated ? 1u : 0u);
-    for (const DriveDef& d : scene.model.drives) EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);
+    for (const DriveDef& d : scene.model.drives) {
+      EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);
+      EXPECT_EQ(d.pull_only, inflated);
+      EXPECT_NEAR(d.toe_force, inflated ? 0.03 * d.stiffness * d.travel : 0.0, 1e-3 * d.toe_force);
+    }
   }
 }
 

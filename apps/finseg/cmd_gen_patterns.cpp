@@ -252,22 +252,38 @@ std::string end_plates(const ConeSpec& s, const std::vector<Vec3>& x, int ring, 
   return out;
 }
 
-// Contact stiffness of the generated cone scenes (docs/folding.md, "Contact stiffness of the
-// generated scenes"): `force` (N) carried by one face sinks it a quarter of the thickness (m),
-// Hertz exponent 1.5.
-double contact_stiffness_rule(double force, double thickness) {
-  return force / std::pow(0.25 * thickness, 1.5);
+// The generated cone scenes' `contact:` section (docs/folding.md, "Contact of the generated
+// scenes"): `force` (N; `what` says whose) carried by one face sinks it a quarter of the
+// thickness (m), Hertz exponent 1.5; elastic-anchor friction, mu 0.3 / 0.25, its spring
+// carrying mu_static times that force at a quarter of the thickness of slip. `keys`: more
+// keys for the section's first line.
+std::string contact_section(double force, const std::string& what, double thickness,
+                            const std::string& keys = "") {
+  const double quarter = 0.25 * thickness, mu_static = 0.3;
+  return fmt::format(
+      "# contact stiffness: {:.3g} N ({}) on one face at a quarter of the thickness;\n"
+      "# anchor friction, its spring carrying mu_static x that force at a quarter of the\n"
+      "# thickness of slip (docs/folding.md, \"Contact of the generated scenes\")\n"
+      "contact: {{stiffness: {:.6g}, exponent: 1.5,{}\n"
+      "          friction: {{model: anchor, mu_static: {:g}, mu_dynamic: 0.25,\n"
+      "                     tangential_stiffness: {:.6g}}}}}\n",
+      force, what, force / std::pow(quarter, 1.5), keys, mu_static, mu_static * force / quarter);
 }
 
 // A pull's drive `name` (YAML list item): a gauge of `gauge` N/m at flat point `at` drawn
-// `travel` m along `direction` (a YAML list) in 1 s; a `string` pulls along it only.
+// `travel` m along `direction` (a YAML list) in 1 s. A `string` pulls along it only, free
+// across it and slack when pushed, its tension eased in over a toe of 3 % of its largest pull
+// (docs/scene.md, `toe_force`).
 std::string pull_drive(const std::string& name, const Vec2& at, const std::string& direction,
                        double gauge, double travel, bool string = false) {
+  const std::string string_keys =
+      string ? fmt::format("\n     lateral_stiffness: 0, pull_only: true, toe_force: {:.4g},",
+                           0.03 * gauge * travel)
+             : "";
   return fmt::format(
       "  - {{name: {}, at: {{s: {:.9g}, y: {:.9g}}}, direction: {}, stiffness: {:g},{}\n"
       "     travel: {:.9g}, step: {:.9g}, speed: {:.9g}}}\n",
-      name, at.x(), at.y(), direction, gauge, string ? " lateral_stiffness: 0," : "", travel,
-      travel / 100, travel);
+      name, at.x(), at.y(), direction, gauge, string_keys, travel, travel / 100, travel);
 }
 
 // The cone scenes' pull after its drives: `probes` (YAML list items), the energy and contact
@@ -344,7 +360,6 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
                          const std::string& start, const std::string& title, int clamped,
                          const std::string& clamped_is, double contact_force, double damping_time,
                          bool caps) {
-  const double contact_stiffness = contact_stiffness_rule(contact_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
   const std::string gas_yaml = fmt::format(
@@ -356,9 +371,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "# Run: finseg run {} --out inflated\n"
       "title: {}\n{}"
       "fixtures: {{panels: [{}]}}   # {}\n"
-      "# contact stiffness: {:.3g} N on one face at a quarter of the thickness\n"
-      "contact: {{stiffness: {:.3g}, exponent: 1.5, initial_overlap: ignore,\n"
-      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+      "{}"
       "{}"
       "probes:\n"
       "  - {{name: energy, type: energy}}\n"
@@ -376,7 +389,8 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
                          "implicit steps at\n# 1e-8 to 1e-6 s once layers meet (docs/gas.md).\n"
                        : "",
       scene_name, title, sheet_sections(o, fold_file, damping_time), clamped + 1, clamped_is,
-      contact_force, contact_stiffness, chamber_section(s, p, caps, {{0.0, 1.0}}));
+      contact_section(contact_force, "the pull's", o.thickness, " initial_overlap: ignore,"),
+      chamber_section(s, p, caps, {{0.0, 1.0}}));
   write_pair(o, p, gas_yaml);
 }
 
@@ -420,7 +434,6 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
     top_names += (k == 0 ? "" : ", ") + t;
     base_names += (k == 0 ? "" : ", ") + b;
   }
-  const double contact_stiffness = contact_stiffness_rule(most_force, o.thickness);
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
   const std::string yaml = fmt::format(
@@ -440,23 +453,20 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "#   finseg run {} --out deploy\n"
       "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
-      "# contact stiffness: {:.3g} N (a gauge's largest pull) on one face at a quarter of the\n"
-      "# thickness (docs/folding.md); continuous friction between the layers as in the other\n"
-      "# cone scenes\n"
-      "contact: {{stiffness: {:.6g}, exponent: 1.5, initial_overlap: ignore,\n"
-      "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
-      "{}{}{}",
+      "{}{}{}{}",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, travel,
       inflate ? ", by strings\n"
-                "# (free across the axis) while gas fills the wall closed by caps of its end "
-                "rings:\n"
-                "# the deployment air, then twice as much again from 0.9 s, held to 1.3 s\n"
+                "# (free across the axis, slack when pushed) while gas fills the wall closed by "
+                "caps of its\n# end rings: the deployment air, then twice as much again from "
+                "0.9 s, held to 1.3 s\n"
                 "# (docs/gas.md, \"The cone stowed by reflection, inflated\").\n#"
               : "; the base band stays gathered\n# (docs/folding.md).",
       scene_name,
       inflate ? "inflated while its ends are drawn apart" : "its ends pulled apart along the axis",
-      sheet_sections(o, fold_file, 1e-3), most_force, contact_stiffness, drives,
-      inflate ? chamber_section(s, p, true, {{0.0, 1.0}, {0.9, 2.0}}) : "",
+      sheet_sections(o, fold_file, 1e-3),
+      contact_section(most_force, "a gauge's largest pull", o.thickness,
+                      " initial_overlap: ignore,"),
+      drives, inflate ? chamber_section(s, p, true, {{0.0, 1.0}, {0.9, 2.0}}) : "",
       pull_run_sections(fmt::format("  - {{name: top, type: drive, drives: [{}]}}\n"
                                     "  - {{name: base, type: drive, drives: [{}]}}\n",
                                     top_names, base_names),
@@ -666,7 +676,6 @@ void register_cone(CLI::App* gen) {
     // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
     // it a quarter of the thickness.
     const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
-    const double contact_stiffness = contact_stiffness_rule(most_force, o->thickness);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
     // Gathering is a rigid motion: the static solver lands on it (docs/folding.md).
@@ -717,10 +726,7 @@ void register_cone(CLI::App* gen) {
         "{}"
         "title: {}\n{}"
         "fixtures: {{panels: [{}]}}   # {}\n"
-        "# contact stiffness: {:.3g} N (gauge stiffness x travel) on one face at a quarter of the "
-        "thickness\n"
-        "contact: {{stiffness: {:.3g}, exponent: 1.5,{}\n"
-        "          friction: {{model: continuous, mu_static: 0.3, mu_dynamic: 0.25}}}}\n"
+        "{}"
         "folding:\n"
         "  fraction: {:g}\n"
         "  duration: 1.0\n"
@@ -739,7 +745,8 @@ void register_cone(CLI::App* gen) {
         from_stack || gathers ? "one face of the top band"
         : s->base_disc        ? "the base disc's hub"
                               : "one face of the base band",
-        most_force, contact_stiffness, from_stack || gathers ? " initial_overlap: ignore," : "",
+        contact_section(most_force, "gauge stiffness x travel", o->thickness,
+                        from_stack || gathers ? " initial_overlap: ignore," : ""),
         to_gathered ? 1.0 : *fraction, coarse_fold, folding_solver,
         top_pull_sections(top, direction, gauge, travel));
     if (!*inflate) {
