@@ -17,7 +17,10 @@ namespace finseg {
 namespace {
 
 // True when an accepted step changed what the forces are made of: a crease opened or
-// closed, a contact point appeared, vanished or started or stopped sliding.
+// closed, a contact point appeared or vanished. An anchor that started or stopped sliding is
+// not one: it only moves its spring's cap, which a kept matrix's contraction test handles, and
+// many pressed points flipping would renew the matrix at nearly every step (docs/solvers.md,
+// "Modified Newton").
 bool history_event(const State& before, const State& after) {
   for (size_t k = 0; k < before.history.size() && k < after.history.size(); ++k) {
     if (before.history[k].openings != after.history[k].openings ||
@@ -29,7 +32,7 @@ bool history_event(const State& before, const State& after) {
   const auto& b = after.contact.anchors;
   if (a.size() != b.size()) return true;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i].key != b[i].key || a[i].sliding != b[i].sliding) return true;
+    if (a[i].key != b[i].key) return true;
   }
   return false;
 }
