@@ -354,7 +354,7 @@ std::string chamber_section(const ConeSpec& s, const CreasePattern& p, bool caps
 }
 
 // The wall inflated (chamber_section, one pulse): `start` says where the wall starts;
-// `contact_force` (N) sets the contact stiffness as for the pull; `damping_time` (s) the
+// `contact_force` (N) sets the contact (contact_section) as for the pull; `damping_time` (s) the
 // material's damping (0: none).
 void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreasePattern& p,
                          const std::string& start, const std::string& title, int clamped,
@@ -424,7 +424,7 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   };
   const double travel = 0.5 * (apart(deployed) - apart(p.vertices_folded_m));
   const double gauge = 1e4 / static_cast<double>(top.size());
-  // Contact stiffness (docs/folding.md): the largest pull of one gauge, its facet held.
+  // The contact (contact_section): from the largest pull of one gauge, its facet held.
   const double most_force = std::max(gauge * travel, 0.1);
   std::string drives = "drives:\n", top_names, base_names;
   for (std::size_t k = 0; k < top.size(); ++k) {
@@ -672,9 +672,8 @@ void register_cone(CLI::App* gen) {
       travel = Vec2(there.x(), there.y()).norm() - out.norm();
     }
     const Vec2 top = face_centroid(p, pulled);
-    // Contact stiffness from the thickness and the load (docs/folding.md, "Contact
-    // stiffness"): the gauge's largest pull (stiffness x travel), carried by one face, sinks
-    // it a quarter of the thickness.
+    // Contact from the thickness and the load (contact_section): the gauge's largest pull
+    // (stiffness x travel), carried by one face, sinks it a quarter of the thickness.
     const double gauge = 20, most_force = std::max(gauge * travel, 0.1);
     const std::string scene_name = fs::path(o->out).filename().string();
     const std::string fold_file = fs::path(o->out).replace_extension(".fold").filename();
