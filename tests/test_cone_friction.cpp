@@ -25,14 +25,27 @@
 namespace finseg {
 namespace cone_friction_test {
 
+const char* const kScene = "reflected_inflate.yaml";
+
 // The shipped scene with the continuous law and two-way gauges (strings that also push).
 std::string continuous_with_gauges() {
+  const std::size_t drives =
+      read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + kScene).model.drives.size();
   std::string a = " --set contact.friction.model=continuous";
-  for (int i = 0; i < 22; ++i) {
+  for (std::size_t i = 0; i < drives; ++i) {
     a += " --set drives." + std::to_string(i) + ".pull_only=false --set drives." +
          std::to_string(i) + ".toe_force=0";
   }
   return a;
+}
+
+// The example, copied into `dir` by run_example, run again into `out` with `extra` arguments.
+test::CliResult run_again(const test::TempDir& dir, const std::string& out,
+                          const std::string& extra) {
+  return test::run_finseg(dir, std::string("run ") + kScene + " --out " + out +
+                                   " --quiet --set outputs.vtk=false --set outputs.html=false "
+                                   "--set outputs.plot=false " +
+                                   extra);
 }
 
 // RMS distance between the segment centres of two state files (m).
@@ -49,16 +62,13 @@ TEST(ConeFriction, InflationWithLayersSlidingMatchesTheWiderLawToItsCreep) {
   const std::string window =
       "--set solver.t_end=0.66 --set solver.dt_min=5e-7" + continuous_with_gauges();
   test::TempDir dir;
-  auto r =
-      test::run_example(dir, "cone", "reflected_inflate.yaml", {"reflected_inflate.fold"}, window);
+  auto r = test::run_example(dir, "cone", kScene, {"reflected_inflate.fold"}, window);
   ASSERT_EQ(r.code, 0) << r.err;
   const double wide_vs = 1e-3;  // m/s
-  r = test::run_finseg(dir,
-                       "run reflected_inflate.yaml --out wide --quiet --set outputs.vtk=false "
-                       "--set outputs.html=false --set outputs.plot=false " +
-                           window +
-                           " --set contact.friction.stiction_speed=1e-3"
-                           " --set contact.friction.friction_speed=1e-2");
+  r = run_again(dir, "wide",
+                window +
+                    " --set contact.friction.stiction_speed=1e-3"
+                    " --set contact.friction.friction_speed=1e-2");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto summary = nlohmann::json::parse(test::slurp(dir / "run/summary.json"));
   EXPECT_GT(summary["stats"]["secant_solves"].get<long>(), 0);
@@ -71,19 +81,15 @@ TEST(ConeFriction, InflationWithLayersSlidingMatchesTheWiderLawToItsCreep) {
 TEST(ConeFriction, AnchorInflationMatchesASofterSpringToItsStickLength) {
   const std::string window = "--set solver.t_end=0.66 --set solver.dt_min=5e-7";
   test::TempDir dir;
-  auto r =
-      test::run_example(dir, "cone", "reflected_inflate.yaml", {"reflected_inflate.fold"}, window);
+  auto r = test::run_example(dir, "cone", kScene, {"reflected_inflate.fold"}, window);
   ASSERT_EQ(r.code, 0) << r.err;
-  const Scene scene = read_scene(dir / "reflected_inflate.yaml");
+  const Scene scene = read_scene(dir / kScene);
   const ContactDef& c = scene.model.contact;
   ASSERT_EQ(c.friction, FrictionModel::Anchor);
   ASSERT_TRUE(scene.model.drives.front().pull_only);
   const double soft_kt = 0.1 * c.tangential_stiffness;
-  r = test::run_finseg(
-      dir,
-      "run reflected_inflate.yaml --out soft --quiet --set outputs.vtk=false "
-      "--set outputs.html=false --set outputs.plot=false " +
-          window + " --set contact.friction.tangential_stiffness=" + std::to_string(soft_kt));
+  r = run_again(dir, "soft",
+                window + " --set contact.friction.tangential_stiffness=" + std::to_string(soft_kt));
   ASSERT_EQ(r.code, 0) << r.err;
   // The reference load F_ref of the generator's rule: K (t / 4)^1.5.
   const double quarter = 0.25 * scene.model.bodies.front().thickness;
@@ -92,10 +98,7 @@ TEST(ConeFriction, AnchorInflationMatchesASofterSpringToItsStickLength) {
   RecordProperty("rms_m", std::to_string(rms));
   EXPECT_LT(rms, c.mu_static * f_ref / soft_kt);
   // The bound discriminates: without friction the wall lies farther from the run's than that.
-  r = test::run_finseg(dir,
-                       "run reflected_inflate.yaml --out none --quiet --set outputs.vtk=false "
-                       "--set outputs.html=false --set outputs.plot=false " +
-                           window + " --set contact.friction.model=none");
+  r = run_again(dir, "none", window + " --set contact.friction.model=none");
   ASSERT_EQ(r.code, 0) << r.err;
   const double rms_none = rms_between(dir / "run/checkpoint.json", dir / "none/checkpoint.json");
   RecordProperty("rms_frictionless_m", std::to_string(rms_none));
