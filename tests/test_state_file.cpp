@@ -36,7 +36,7 @@ State busy_state(const Model& m) {
     s.w_W[i] = Vec3(std::cos(i), -7.0 / 11, 2.0);
   }
   for (std::size_t k = 0; k < s.history.size(); ++k)
-    s.history[k] = {0.1 * k + 1e-9, int(k), k % 2 == 1};
+    s.history[k] = {0.1 * k + 1e-9, int(k), k % 2 == 1, Vec3(3.5 + k, -0.2, 1e-7 * k)};
   s.contact.anchors = {
       {3, Vec3(1, 2, 3) / 7, Vec3(-1, 0, 1) / 9, 0.25, -1, true, 2.5e-4},
       {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1, 3e-5 / 7}};
@@ -82,6 +82,7 @@ TEST(StateFile, RoundTripIsExact) {
     EXPECT_EQ(q.history[k].fold_angle, s.history[k].fold_angle);
     EXPECT_EQ(q.history[k].openings, s.history[k].openings);
     EXPECT_EQ(q.history[k].opened, s.history[k].opened);
+    EXPECT_EQ(q.history[k].rotation_F, s.history[k].rotation_F);
   }
   ASSERT_EQ(q.contact.anchors.size(), 2u);
   for (std::size_t a = 0; a < 2; ++a) {

@@ -6,6 +6,7 @@
 #include "elements/crease_history.hpp"
 #include "elements/drive_gauge.hpp"
 #include "elements/force_elements.hpp"
+#include "elements/joint_rotation_history.hpp"
 #include "elements/membrane_cells.hpp"
 #include "elements/plate_cells.hpp"
 #include "elements/pressure.hpp"
@@ -98,6 +99,7 @@ Eigen::VectorXd generalized_forces(const Model& model, const BodyForces& forces)
 
 void commit_history(const Model& model, State& state, bool start) {
   commit_crease_history(model, state);
+  commit_joint_rotations(model, state);
   commit_contact_history(model, state, start);
   commit_chamber_gas(model, state);
 }

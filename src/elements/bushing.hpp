@@ -38,6 +38,21 @@ T fold_angle(const Mat3T<T>& R_WE, const Mat3T<T>& R_WF, double previous) {
   return raw + T(2 * kPi * turns);
 }
 
+/// Rotation vector theta with exp([theta]x) = R, of all such vectors (log R plus whole turns
+/// about its axis) the one nearest to `previous`: continuous where a joint bends through a
+/// half turn, |theta| up to 2 pi. previous = 0 gives log R itself.
+template <class T>
+Vec3T<T> rotation_near(const Mat3T<T>& R, const Vec3& previous) {
+  const Vec3T<T> v = so3_log<T>(R);
+  const Vec3 v0(value_of(v[0]), value_of(v[1]), value_of(v[2]));
+  const double th = v0.norm();
+  if (th < 1e-6) return v;  // an axis too short to turn about; previous is near 0 as well
+  const double turns = std::round((v0.dot(previous) / th - th) / (2 * kPi));
+  if (turns == 0) return v;
+  const T norm = v.norm();
+  return v * ((norm + T(2 * kPi * turns)) / norm);
+}
+
 /// Gradient of the fold angle with respect to a world-frame rotation of the inner body.
 template <class T>
 Vec3T<T> fold_angle_gradient(const Mat3T<T>& R_WE, const Mat3T<T>& R_WF) {
@@ -48,8 +63,9 @@ Vec3T<T> fold_angle_gradient(const Mat3T<T>& R_WE, const Mat3T<T>& R_WF) {
 
 /// Force element kernel. Forces of the translational springs act on both bodies along one
 /// line through P+ (conservative and angular-momentum preserving); the couple derives
-/// from U = 1/2 theta^T K theta with theta = log(R_FE). For a crease, the rotation about
-/// F's y axis is the exact fold angle and its moment comes from the crease law.
+/// from U = 1/2 theta^T K theta with theta = log(R_FE), unwrapped through pi against the
+/// history (a plate joint bent past a half turn keeps its energy rising). For a crease, the
+/// rotation about F's y axis is the exact fold angle and its moment comes from the crease law.
 template <class T>
 T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHistory& hist, double t,
                  const BodyKin<T>& A, const BodyKin<T>& B, Wrench<T>& on_A, Wrench<T>& on_B) {
@@ -97,7 +113,7 @@ T element_kernel(const ElementDef& e, const CreaseDef* crease, const ElementHist
     R_FE = R_F_fold.transpose() * R_FE;
     K[4] = 0;
   }
-  const Vec3T<T> th = so3_log<T>(R_FE);
+  const Vec3T<T> th = rotation_near<T>(R_FE, hist.rotation_F);
   Vec3T<T> Kth;
   for (int i = 0; i < 3; ++i) {
     Kth[i] = K[3 + i] * th[i];

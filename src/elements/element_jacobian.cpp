@@ -111,7 +111,7 @@ void add_rotational(const ElementDef& e, const CreaseDef* crease, const ElementH
     R_FE = Ry.transpose() * R_FE;
     k[1] = 0;
   }
-  const Vec3 th = so3_log<double>(R_FE);
+  const Vec3 th = rotation_near<double>(R_FE, hist.rotation_F);
   double c = 0, cp_over_t = 0;
   left_jacobian_coefficients(th.squaredNorm(), c, cp_over_t);
   const Mat3 Jl_inv = left_jacobian_inv(th, c);

@@ -4,6 +4,7 @@
 
 #include "core/so3.hpp"
 #include "elements/assembler.hpp"
+#include "elements/bushing.hpp"
 #include "elements/cell_bodies.hpp"
 #include "elements/element_jacobian.hpp"
 
@@ -11,8 +12,9 @@ namespace finseg {
 namespace {
 
 // An element's relative rotation at the current state: its frame F (on its outer body), the
-// relative rotation theta = log(R_FE) (F components) and its inverse left Jacobian. The same
-// for both cells the element is a side of, so each evaluation takes it once per element.
+// relative rotation theta = log(R_FE) (F components, unwrapped through pi) and its inverse left
+// Jacobian. The same for both cells the element is a side of, so each evaluation takes it once per
+// element.
 struct ElementRotation {
   Mat3 R_WF;
   Vec3 theta_F;
@@ -41,7 +43,7 @@ class ElementRotations {
     const ElementDef& e = model.elements[element];
     r.R_WF = s.R_WB[e.outer] * e.R_outer_F;
     const Mat3 R_WE = s.R_WB[e.inner] * e.R_inner_E;
-    r.theta_F = so3_log<double>(r.R_WF.transpose() * R_WE);
+    r.theta_F = rotation_near<double>(r.R_WF.transpose() * R_WE, s.history[element].rotation_F);
     r.Jl_inv = left_jacobian_inverse(r.theta_F);
     done_[element] = 1;
     return r;

@@ -14,6 +14,11 @@ struct ElementHistory {
   double fold_angle = 0;  ///< last accepted unwrapped fold angle (creases), rad
   int openings = 0;       ///< completed openings of the crease
   bool opened = false;    ///< currently past the opening threshold
+  /// Last accepted relative rotation theta of a joint that resists turning (F components),
+  /// rad, unwrapped: |theta| passes pi where the joint bends past a half turn. Zero while it
+  /// is turned less than 2 rad (log R_FE is then the nearest anyway), for creases and for
+  /// joints with no rotational stiffness.
+  Vec3 rotation_F = Vec3::Zero();
 };
 
 /// What a dynamic solver carries from one step to the next besides the State proper, saved

@@ -136,6 +136,9 @@ void read_elements(const Reader& in, const json& j, std::size_t n, State& s) {
     if (openings < 0 || openings > 1000000) in.fail(f + ".openings", "expected 0..1000000");
     h.openings = static_cast<int>(openings);
     h.opened = in.boolean(in.key(elements[k], "opened", f), f + ".opened");
+    // Optional: states written before the key existed continue from log R_FE.
+    if (elements[k].contains("rotation_F_rad"))
+      h.rotation_F = in.vec(elements[k]["rotation_F_rad"], f + ".rotation_F_rad");
     s.history.push_back(h);
   }
 }
@@ -278,8 +281,10 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
   }
   json elements = json::array();
   for (const ElementHistory& h : s.history) {
-    elements.push_back(
-        {{"fold_angle_rad", h.fold_angle}, {"openings", h.openings}, {"opened", h.opened}});
+    elements.push_back({{"fold_angle_rad", h.fold_angle},
+                        {"openings", h.openings},
+                        {"opened", h.opened},
+                        {"rotation_F_rad", vec_json(h.rotation_F)}});
   }
   json j = {{"format", kFormat},
             {"version", kVersion},

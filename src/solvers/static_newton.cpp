@@ -8,6 +8,7 @@
 #include "collision/contact_forces.hpp"
 #include "core/error.hpp"
 #include "elements/chamber_gas.hpp"
+#include "elements/joint_rotation_history.hpp"
 #include "elements/pressure.hpp"
 #include "solvers/dofs.hpp"
 #include "solvers/integrators.hpp"
@@ -320,6 +321,7 @@ bool settle(const Model& model, State& state, const SolverSettings& settings, do
       // openings are not: the pseudo-time swing of a crease past an opening threshold is the
       // relaxation's own (it has no damping but the kinetic one), not the structure's.
       v = moved / h;
+      commit_joint_rotations(model, state);  // the steps may carry a joint through pi
       if (on_path) {
         set_velocity(model, state, v);
         commit_contact_history(model, state);

@@ -1,0 +1,70 @@
+#include "elements/joint_rotation_history.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/warnings.hpp"
+#include "elements/bushing.hpp"
+
+namespace finseg {
+namespace {
+
+constexpr char kPastHalfTurn[] = "bent past 180 deg";
+constexpr long kMostWarnings = 5;  // of a run: a joint rocking about pi would repeat itself
+
+// The two segments lie on each other at pi; past it they pass through each other, which
+// contact does not see (it leaves segments that share an edge alone): said, not stopped.
+void warn_past_half_turn(const Model& model, const State& state, int k) {
+  const std::vector<std::string> said = recorded_warnings();
+  const long before = std::count_if(said.begin(), said.end(), [](const std::string& w) {
+    return w.find(kPastHalfTurn) != std::string::npos;
+  });
+  if (before >= kMostWarnings) return;
+  const ElementDef& e = model.elements[k];
+  warn(
+      fmt::format("joint '{}' (segments {} and {}) {} at t = {:.6g} s: the two segments pass "
+                  "through each other there, which contact between neighbours does not "
+                  "prevent; its bending energy goes on rising (docs/contact.md){}",
+                  e.name, model.bodies[e.inner].name, model.bodies[e.outer].name, kPastHalfTurn,
+                  state.t, before + 1 == kMostWarnings ? " (further ones not reported)" : ""));
+}
+
+// Below this turn (rad) log R_FE is the nearest rotation whatever the last one was (a step
+// does not turn a joint by pi - 2), so the history keeps zero there and skips the logarithm.
+constexpr double kKeptFrom = 2.0;
+
+void commit_joint(const Model& model, State& state, int k) {
+  const ElementDef& e = model.elements[k];
+  const Mat3 R_FE =
+      (state.R_WB[e.outer] * e.R_outer_F).transpose() * (state.R_WB[e.inner] * e.R_inner_E);
+  Vec3& theta = state.history[k].rotation_F;
+  static const double kKeptTrace = 1 + 2 * std::cos(kKeptFrom);  // trace = 1 + 2 cos(angle)
+  if (theta.isZero() && R_FE.trace() > kKeptTrace) return;
+  const bool within = theta.norm() <= kPi;
+  theta = rotation_near<double>(R_FE, theta);
+  if (within && theta.norm() > kPi) warn_past_half_turn(model, state, k);
+  if (theta.norm() < kKeptFrom) theta.setZero();
+}
+
+}  // namespace
+
+void commit_joint_rotations(const Model& model, State& state) {
+  // A crease's rotation left after its fold is small; a joint with no rotational stiffness
+  // keeps theta = log R_FE (|theta| <= pi), where the unwrapped one could reach 2 pi, the
+  // singularity of the left Jacobian, with nothing gained.
+  for (int k = 0; k < static_cast<int>(model.elements.size()); ++k) {
+    const ElementDef& e = model.elements[k];
+    if (e.crease < 0 && e.K.tail<3>().any()) commit_joint(model, state, k);
+  }
+  for (const PlateCellDef& cell : model.plate_cells) {
+    for (const PlateCellSide& side : cell.sides) {
+      const ElementDef& e = model.elements[side.element];
+      if (e.crease < 0 && !e.K.tail<3>().any()) commit_joint(model, state, side.element);
+    }
+  }
+}
+
+}  // namespace finseg
