@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "core/so3.hpp"
@@ -79,21 +80,51 @@ TEST(JointHalfTurn, LinearSpringKeepsItsMomentAndEnergyPastHalfATurn) {
   EXPECT_NEAR(s.history[0].rotation_F.y(), 1.6 * kPi, 1e-12);
 }
 
-TEST(JointHalfTurn, JacobianMatchesCentralDifferencesPastHalfATurn) {
-  const Model m = two_plates();
-  for (const double beta : {kPi - 0.02, kPi + 0.02, 1.3 * kPi}) {
-    State s = initial_state(m);
-    for (double b = 0.1; b < beta; b += 0.1) {
-      bend(s, b);
-      commit_history(m, s);
-    }
+// The same with contact on: past pi the joint's stop (collision/joint_stops.hpp) adds the
+// contact law's force F = K delta^e at delta = (beta - pi) r, r = a / 2, as the couple F r.
+Model two_plates_in_contact() {
+  Model m = two_plates();
+  m.contact.enabled = true;
+  m.contact.stiffness = 2e6;  // N/m^1.5
+  m.contact.exponent = 1.5;
+  return m;
+}
+
+TEST(JointHalfTurn, StopPastHalfATurnIsTheContactLawAtTheCentroidsDistance) {
+  const Model m = two_plates_in_contact();
+  State s = initial_state(m);
+  const double k = kTurnStiffness.y(), r = kA / 2, K = m.contact.stiffness;
+  for (int i = 1; i <= 22; ++i) {  // to 1.1 pi
+    const double beta = 0.05 * kPi * i;
     bend(s, beta);
-    Eigen::VectorXd dq(m.num_dofs);  // off the axis: all three rotations and translations
-    for (int i = 0; i < m.num_dofs; ++i) dq[i] = (i < 3 ? 1e-4 : 0.05) * std::sin(1.3 * i + 0.2);
-    apply_pose_increment(m, s, dq);
-    const Eigen::MatrixXd J = test::pose_jacobian(m, s), fd = test::fd_pose_jacobian(m, s, 1e-7);
+    BodyForces f;
+    compute_forces(m, s, f);
+    const double delta = std::max(0.0, (beta - kPi) * r);
+    const double moment = k * beta + K * std::pow(delta, 1.5) * r;
+    const double energy = 0.5 * k * beta * beta + K * std::pow(delta, 2.5) / 2.5;
     SCOPED_TRACE(beta);
-    EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * J.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(f.tau_W[1].y(), -moment, 1e-12 * moment);
+    EXPECT_NEAR(f.potential_energy, energy, 1e-12 * energy);
+    commit_history(m, s);
+  }
+}
+
+TEST(JointHalfTurn, JacobianMatchesCentralDifferencesPastHalfATurn) {
+  for (const Model& m : {two_plates(), two_plates_in_contact()}) {
+    for (const double beta : {kPi - 0.02, kPi + 0.02, 1.3 * kPi}) {
+      State s = initial_state(m);
+      for (double b = 0.1; b < beta; b += 0.1) {
+        bend(s, b);
+        commit_history(m, s);
+      }
+      bend(s, beta);
+      Eigen::VectorXd dq(m.num_dofs);  // off the axis: all three rotations and translations
+      for (int i = 0; i < m.num_dofs; ++i) dq[i] = (i < 3 ? 1e-4 : 0.05) * std::sin(1.3 * i + 0.2);
+      apply_pose_increment(m, s, dq);
+      const Eigen::MatrixXd J = test::pose_jacobian(m, s), fd = test::fd_pose_jacobian(m, s, 1e-7);
+      SCOPED_TRACE(beta);
+      EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-6 * J.cwiseAbs().maxCoeff());
+    }
   }
 }
 

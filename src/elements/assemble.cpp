@@ -1,6 +1,7 @@
 #include "elements/assemble.hpp"
 
 #include "collision/contact_forces.hpp"
+#include "collision/joint_stops.hpp"
 #include "elements/assembler.hpp"
 #include "elements/chamber_gas.hpp"
 #include "elements/crease_history.hpp"
@@ -63,6 +64,7 @@ void compute_forces(const Model& model, const State& state, BodyForces& out, For
   add_chamber_pressures(model, state, as);
   add_drive_gauges(model, state, as);
   add_contact_forces(model, state, as);
+  add_joint_stops(model, state, as);
   if (jac) {
     jac->dq_blocks.to_sparse(model.num_dofs, jac->dq);
     jac->dv_blocks.to_sparse(model.num_dofs, jac->dv);

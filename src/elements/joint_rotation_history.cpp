@@ -1,36 +1,11 @@
 #include "elements/joint_rotation_history.hpp"
 
-#include <fmt/format.h>
-
-#include <algorithm>
 #include <cmath>
-#include <string>
 
-#include "core/warnings.hpp"
 #include "elements/bushing.hpp"
 
 namespace finseg {
 namespace {
-
-constexpr char kPastHalfTurn[] = "bent past 180 deg";
-constexpr long kMostWarnings = 5;  // of a run: a joint rocking about pi would repeat itself
-
-// The two segments lie on each other at pi; past it they pass through each other, which
-// contact does not see (it leaves segments that share an edge alone): said, not stopped.
-void warn_past_half_turn(const Model& model, const State& state, int k) {
-  const std::vector<std::string> said = recorded_warnings();
-  const long before = std::count_if(said.begin(), said.end(), [](const std::string& w) {
-    return w.find(kPastHalfTurn) != std::string::npos;
-  });
-  if (before >= kMostWarnings) return;
-  const ElementDef& e = model.elements[k];
-  warn(
-      fmt::format("joint '{}' (segments {} and {}) {} at t = {:.6g} s: the two segments pass "
-                  "through each other there, which contact between neighbours does not "
-                  "prevent; its bending energy goes on rising (docs/contact.md){}",
-                  e.name, model.bodies[e.inner].name, model.bodies[e.outer].name, kPastHalfTurn,
-                  state.t, before + 1 == kMostWarnings ? " (further ones not reported)" : ""));
-}
 
 // Below this turn (rad) log R_FE is the nearest rotation whatever the last one was (a step
 // does not turn a joint by pi - 2), so the history keeps zero there and skips the logarithm.
@@ -43,9 +18,7 @@ void commit_joint(const Model& model, State& state, int k) {
   Vec3& theta = state.history[k].rotation_F;
   static const double kKeptTrace = 1 + 2 * std::cos(kKeptFrom);  // trace = 1 + 2 cos(angle)
   if (theta.isZero() && R_FE.trace() > kKeptTrace) return;
-  const bool within = theta.norm() <= kPi;
   theta = rotation_near<double>(R_FE, theta);
-  if (within && theta.norm() > kPi) warn_past_half_turn(model, state, k);
   if (theta.norm() < kKeptFrom) theta.setZero();
 }
 
