@@ -7,10 +7,12 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/so3.hpp"
 #include "elements/assemble.hpp"
 #include "elements/bushing.hpp"
+#include "elements/crease_law.hpp"
 #include "generators/pattern_sheet.hpp"
 #include "jacobian_test_util.hpp"
 #include "patterns/fold_format.hpp"
@@ -109,8 +111,35 @@ TEST(JointHalfTurn, StopPastHalfATurnIsTheContactLawAtTheCentroidsDistance) {
   }
 }
 
+// The joint made a crease (a linear law): its stop acts on the unwrapped fold angle.
+Model creased(Model m) {
+  m.elements[0].crease = 0;
+  m.creases.push_back({std::make_shared<LinearCreaseLaw>(0.3, 0.0), 0.0});
+  return m;
+}
+
+TEST(JointHalfTurn, CreaseStopPastHalfATurnIsTheContactLaw) {
+  const Model off = creased(two_plates()), on = creased(two_plates_in_contact());
+  State s = initial_state(on);
+  const double r = kA / 2, K = on.contact.stiffness;
+  for (int i = 1; i <= 22; ++i) {  // to 1.1 pi
+    const double beta = 0.05 * kPi * i;
+    bend(s, beta);
+    BodyForces f_on, f_off;
+    compute_forces(on, s, f_on);
+    compute_forces(off, s, f_off);
+    const double delta = std::max(0.0, (beta - kPi) * r);
+    const double moment = K * std::pow(delta, 1.5) * r, energy = K * std::pow(delta, 2.5) / 2.5;
+    SCOPED_TRACE(beta);
+    EXPECT_NEAR(f_on.tau_W[1].y() - f_off.tau_W[1].y(), -moment, 1e-9 * (moment + 1e-6));
+    EXPECT_NEAR(f_on.potential_energy - f_off.potential_energy, energy, 1e-9 * (energy + 1e-9));
+    commit_history(on, s);
+  }
+  EXPECT_NEAR(s.history[0].fold_angle, 1.1 * kPi, 1e-12);
+}
+
 TEST(JointHalfTurn, JacobianMatchesCentralDifferencesPastHalfATurn) {
-  for (const Model& m : {two_plates(), two_plates_in_contact()}) {
+  for (const Model& m : {two_plates(), two_plates_in_contact(), creased(two_plates_in_contact())}) {
     for (const double beta : {kPi - 0.02, kPi + 0.02, 1.3 * kPi}) {
       State s = initial_state(m);
       for (double b = 0.1; b < beta; b += 0.1) {

@@ -11,21 +11,81 @@
 namespace finseg {
 namespace {
 
-// The couple's F components w(theta) = m(|theta|) theta / |theta| and dw/dtheta, with
-// m = F(delta) r and delta = (|theta| - pi) r; false where the joint is within a half turn.
-bool stop_couple(const ContactDef& c, const Vec3& theta, double r, Vec3& w, Mat3& dw,
-                 double& energy) {
-  const double angle = theta.norm();
+// A crease's fold angle cannot pass pi within one step from below this (rad).
+constexpr double kCreaseWatchedFrom = 2.5;
+
+// The stop's moment m = F(delta) r, its slope dm/dangle = F'(delta) r^2 and its energy, at
+// delta = (angle - pi) r; false within a half turn.
+struct StopMoment {
+  double moment = 0, slope = 0, energy = 0;
+};
+bool stop_moment(const ContactDef& c, double angle, double r, StopMoment& out) {
   const double delta = (angle - kPi) * r;
   if (delta <= 0) return false;
-  const double force = normal_force<double>(c, delta, 0.0, 0.0);
-  const double slope = c.stiffness * c.exponent * std::pow(delta, c.exponent - 1);  // dF/ddelta
-  const double m = force * r;
-  const Vec3 u = theta / angle;
-  w = m * u;
-  dw = slope * r * r * u * u.transpose() + (m / angle) * (Mat3::Identity() - u * u.transpose());
-  energy = contact_energy(c, delta);  // U = int F r d|theta| = int F d(delta)
+  out.moment = normal_force<double>(c, delta, 0.0, 0.0) * r;
+  out.slope = c.stiffness * c.exponent * std::pow(delta, c.exponent - 1) * r * r;
+  out.energy = contact_energy(c, delta);  // int F r d(angle) = int F d(delta)
   return true;
+}
+
+double lever(const ElementDef& e) {
+  return std::min(e.c_inner_B.norm(), e.c_outer_B.norm());
+}
+
+// d(couple on the inner body)/d(dphi_inner) and /d(dphi_outer): the outer's rows are minus
+// these.
+void add_blocks(Assembler& as, const ElementDef& e, const Mat3& d_inner, const Mat3& d_outer) {
+  as.add_rotation_block(e.inner, e.inner, d_inner);
+  as.add_rotation_block(e.inner, e.outer, d_outer);
+  as.add_rotation_block(e.outer, e.inner, Mat3(-d_inner));
+  as.add_rotation_block(e.outer, e.outer, Mat3(-d_outer));
+}
+
+// A joint's rotation vector theta: U(|theta|), dE = w . Jl^-1 R_WF^T (dphi_inner - dphi_outer)
+// with w = m theta / |theta|, as a plate cell's side.
+void add_joint_stop(const Model& model, const State& state, int k, Assembler& as) {
+  const ElementDef& e = model.elements[k];
+  const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
+  const Mat3 R_WE = state.R_WB[e.inner] * e.R_inner_E;
+  const Vec3 theta = rotation_near<double>(R_WF.transpose() * R_WE, state.history[k].rotation_F);
+  const double angle = theta.norm();
+  StopMoment s;
+  if (!stop_moment(model.contact, angle, lever(e), s)) return;
+  const Vec3 u = theta / angle, w = s.moment * u;
+  const Mat3 Jl_inv = left_jacobian_inverse(theta);
+  const Vec3 g = Jl_inv.transpose() * w;
+  const Vec3 tau = -R_WF * g;  // on the inner body
+  as.add_energy(s.energy);
+  as.add(e.inner, {Vec3::Zero(), tau});
+  as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
+  if (!as.want_jacobian()) return;
+  const Mat3 dw =
+      s.slope * u * u.transpose() + (s.moment / angle) * (Mat3::Identity() - u * u.transpose());
+  const Mat3 dg = (left_jacobian_inverse_transpose_derivative(theta, w) + Jl_inv.transpose() * dw) *
+                  Jl_inv * R_WF.transpose();  // by dphi_inner - dphi_outer
+  const Mat3 d_inner = -R_WF * dg;
+  add_blocks(as, e, d_inner, -d_inner + hat(Vec3(R_WF * g)));  // R_WF turns with the outer
+}
+
+// A crease's fold angle alpha (unwrapped, ElementHistory::fold_angle): U(|alpha|), the couple
+// -U' grad(alpha) on the inner body, as the crease law's (elements/bushing.hpp).
+void add_crease_stop(const Model& model, const State& state, int k, Assembler& as) {
+  const ElementDef& e = model.elements[k];
+  const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
+  const Mat3 R_WE = state.R_WB[e.inner] * e.R_inner_E;
+  const double alpha = fold_angle<double>(R_WE, R_WF, state.history[k].fold_angle);
+  StopMoment s;
+  if (!stop_moment(model.contact, std::abs(alpha), lever(e), s)) return;
+  const double sign = alpha > 0 ? 1.0 : -1.0, dU = sign * s.moment;
+  const Vec3 grad = fold_angle_gradient<double>(R_WE, R_WF);
+  const Vec3 tau = -dU * grad;  // on the inner body
+  as.add_energy(s.energy);
+  as.add(e.inner, {Vec3::Zero(), tau});
+  as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
+  if (!as.want_jacobian()) return;
+  const Mat3 d_inner =
+      -s.slope * grad * grad.transpose() - dU * fold_gradient_derivative(R_WE, R_WF);
+  add_blocks(as, e, d_inner, -d_inner + dU * hat(grad));  // grad turns with the outer body
 }
 
 }  // namespace
@@ -33,34 +93,13 @@ bool stop_couple(const ContactDef& c, const Vec3& theta, double r, Vec3& w, Mat3
 void add_joint_stops(const Model& model, const State& state, Assembler& as) {
   if (!model.contact.enabled) return;
   for (std::size_t k = 0; k < model.elements.size(); ++k) {
-    const Vec3& kept = state.history[k].rotation_F;  // zero unless turned 2 rad or more
-    if (kept.isZero()) continue;
-    const ElementDef& e = model.elements[k];
-    const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
-    const Mat3 R_WE = state.R_WB[e.inner] * e.R_inner_E;
-    const Vec3 theta = rotation_near<double>(R_WF.transpose() * R_WE, kept);
-    const double r = std::min(e.c_inner_B.norm(), e.c_outer_B.norm());
-    Vec3 w;
-    Mat3 dw;
-    double energy = 0;
-    if (!stop_couple(model.contact, theta, r, w, dw, energy)) continue;
-    // dE = w . Jl^-1 R_WF^T (dphi_inner - dphi_outer): as a plate cell's side.
-    const Mat3 Jl_inv = left_jacobian_inverse(theta);
-    const Vec3 g = Jl_inv.transpose() * w;
-    const Vec3 tau = -R_WF * g;  // on the inner body
-    as.add_energy(energy);
-    as.add(e.inner, {Vec3::Zero(), tau});
-    as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
-    if (!as.want_jacobian()) continue;
-    const Mat3 dg =
-        (left_jacobian_inverse_transpose_derivative(theta, w) + Jl_inv.transpose() * dw) * Jl_inv *
-        R_WF.transpose();  // by dphi_inner - dphi_outer
-    const Mat3 dtau_inner = -R_WF * dg;
-    const Mat3 dtau_outer = -dtau_inner + hat(Vec3(R_WF * g));  // R_WF turns with the outer body
-    as.add_rotation_block(e.inner, e.inner, dtau_inner);
-    as.add_rotation_block(e.inner, e.outer, dtau_outer);
-    as.add_rotation_block(e.outer, e.inner, Mat3(-dtau_inner));
-    as.add_rotation_block(e.outer, e.outer, Mat3(-dtau_outer));
+    const int i = static_cast<int>(k);
+    if (model.elements[k].crease >= 0) {
+      if (std::abs(state.history[k].fold_angle) >= kCreaseWatchedFrom)
+        add_crease_stop(model, state, i, as);
+    } else if (!state.history[k].rotation_F.isZero()) {  // kept from 2 rad on
+      add_joint_stop(model, state, i, as);
+    }
   }
 }
 

@@ -10,11 +10,12 @@ class Assembler;
 
 /// Contact of a joint's own two segments (docs/contact.md, "Joints folded flat"). Contact
 /// leaves segments that share an edge alone (their corners overlap by construction), so a
-/// joint bent past a half turn (|theta| > pi, its unwrapped rotation, ElementHistory) would let
-/// them pass through each other. Past pi, the part of the shorter segment at its centroid's
-/// distance r from the joint point has gone (|theta| - pi) r into the other: the contact law's
-/// normal force F(delta) acts there as a couple F r along theta, the exact gradient of
-/// U = int F r d|theta|. Nothing when contact is disabled.
+/// joint bent past a half turn would let them pass through each other. Past pi (|theta| of a
+/// joint's unwrapped rotation, |alpha| of a crease's unwrapped fold angle; ElementHistory), the
+/// part of the shorter segment at its centroid's distance r from the joint point has gone
+/// delta = (angle - pi) r into the other: the contact law's normal force F(delta) acts there
+/// as a couple F r about the joint, the exact gradient of U = int F d(delta). Nothing when
+/// contact is disabled.
 void add_joint_stops(const Model& model, const State& state, Assembler& as);
 
 }  // namespace finseg

@@ -26,18 +26,6 @@ Mat3 left_jacobian_inv(const Vec3& th, double c) {
   return Mat3::Identity() - 0.5 * K + c * K * K;
 }
 
-// d(grad alpha)/d(dphi_A) of fold_angle_gradient: grad = uE x w / rho^2 with
-// w = x b - y uF, b = a x uF, x = uF . uE, y = b . uE, rho^2 = x^2 + y^2; uE turns with A.
-Mat3 fold_gradient_derivative(const Mat3& R_WE, const Mat3& R_WF) {
-  const Vec3 uE = R_WE.col(0), uF = R_WF.col(0), a = R_WF.col(1);
-  const Vec3 b = a.cross(uF);
-  const double x = uF.dot(uE), y = b.dot(uE), rho2 = x * x + y * y;
-  const Vec3 w = x * b - y * uF, n = uE.cross(w);
-  const Mat3 d_duE = (-hat(w) + hat(uE) * (b * uF.transpose() - uF * b.transpose())) / rho2 -
-                     (2 / (rho2 * rho2)) * n * (x * uF + y * b).transpose();
-  return d_duE * -hat(uE);
-}
-
 // Translational springs and dampers: force f on A at P+, -f on B. Written in 3 x 3 blocks
 // (the columns of d(P+ - P-) are I, -[r_A], -I, [r_B]).
 void add_translational(const ElementDef& e, const BodyKin<double>& A, const BodyKin<double>& B,
@@ -141,6 +129,18 @@ void add_rotational(const ElementDef& e, const CreaseDef* crease, const ElementH
 }
 
 }  // namespace
+
+// grad = uE x w / rho^2 with w = x b - y uF, b = a x uF, x = uF . uE, y = b . uE,
+// rho^2 = x^2 + y^2; uE turns with A.
+Mat3 fold_gradient_derivative(const Mat3& R_WE, const Mat3& R_WF) {
+  const Vec3 uE = R_WE.col(0), uF = R_WF.col(0), a = R_WF.col(1);
+  const Vec3 b = a.cross(uF);
+  const double x = uF.dot(uE), y = b.dot(uE), rho2 = x * x + y * y;
+  const Vec3 w = x * b - y * uF, n = uE.cross(w);
+  const Mat3 d_duE = (-hat(w) + hat(uE) * (b * uF.transpose() - uF * b.transpose())) / rho2 -
+                     (2 / (rho2 * rho2)) * n * (x * uF + y * b).transpose();
+  return d_duE * -hat(uE);
+}
 
 Mat3 left_jacobian_inverse(const Vec3& th) {
   double c = 0, cp_over_t = 0;

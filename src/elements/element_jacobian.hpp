@@ -23,6 +23,9 @@ void element_jacobian(const ElementDef& e, const CreaseDef* crease, const Elemen
 /// d g / d theta of g = Jl^-T(theta) diag(k) theta, the couple of the rotational springs.
 Mat3 rotational_spring_derivative(const Vec3& theta, const Vec3& k);
 
+/// d(grad alpha)/d(dphi_A) of fold_angle_gradient (the inner body's world rotation).
+Mat3 fold_gradient_derivative(const Mat3& R_WE, const Mat3& R_WF);
+
 /// Jl^-1(theta), the inverse left Jacobian of SO(3): d log(R) = Jl^-1 (dphi, left increment).
 Mat3 left_jacobian_inverse(const Vec3& theta);
 
