@@ -32,6 +32,15 @@ double lever(const ElementDef& e) {
   return std::min(e.c_inner_B.norm(), e.c_outer_B.norm());
 }
 
+// The couple tau on the inner body (-tau on the outer) and the stop's energy; true when the
+// Jacobian is wanted.
+bool add_couple(Assembler& as, const ElementDef& e, const Vec3& tau, double energy) {
+  as.add_energy(energy);
+  as.add(e.inner, {Vec3::Zero(), tau});
+  as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
+  return as.want_jacobian();
+}
+
 // d(couple on the inner body)/d(dphi_inner) and /d(dphi_outer): the outer's rows are minus
 // these.
 void add_blocks(Assembler& as, const ElementDef& e, const Mat3& d_inner, const Mat3& d_outer) {
@@ -54,11 +63,7 @@ void add_joint_stop(const Model& model, const State& state, int k, Assembler& as
   const Vec3 u = theta / angle, w = s.moment * u;
   const Mat3 Jl_inv = left_jacobian_inverse(theta);
   const Vec3 g = Jl_inv.transpose() * w;
-  const Vec3 tau = -R_WF * g;  // on the inner body
-  as.add_energy(s.energy);
-  as.add(e.inner, {Vec3::Zero(), tau});
-  as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
-  if (!as.want_jacobian()) return;
+  if (!add_couple(as, e, -R_WF * g, s.energy)) return;
   const Mat3 dw =
       s.slope * u * u.transpose() + (s.moment / angle) * (Mat3::Identity() - u * u.transpose());
   const Mat3 dg = (left_jacobian_inverse_transpose_derivative(theta, w) + Jl_inv.transpose() * dw) *
@@ -78,11 +83,7 @@ void add_crease_stop(const Model& model, const State& state, int k, Assembler& a
   if (!stop_moment(model.contact, std::abs(alpha), lever(e), s)) return;
   const double sign = alpha > 0 ? 1.0 : -1.0, dU = sign * s.moment;
   const Vec3 grad = fold_angle_gradient<double>(R_WE, R_WF);
-  const Vec3 tau = -dU * grad;  // on the inner body
-  as.add_energy(s.energy);
-  as.add(e.inner, {Vec3::Zero(), tau});
-  as.add(e.outer, {Vec3::Zero(), Vec3(-tau)});
-  if (!as.want_jacobian()) return;
+  if (!add_couple(as, e, -dU * grad, s.energy)) return;
   const Mat3 d_inner =
       -s.slope * grad * grad.transpose() - dU * fold_gradient_derivative(R_WE, R_WF);
   add_blocks(as, e, d_inner, -d_inner + dU * hat(grad));  // grad turns with the outer body
