@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "collision/contact_forces.hpp"
 #include "core/so3.hpp"
 #include "elements/assemble.hpp"
 #include "elements/bushing.hpp"
@@ -109,6 +110,24 @@ TEST(JointHalfTurn, StopPastHalfATurnIsTheContactLawAtTheCentroidsDistance) {
     EXPECT_NEAR(f.potential_energy, energy, 1e-12 * energy);
     commit_history(m, s);
   }
+}
+
+TEST(JointHalfTurn, ContactProbesCountAStopAsOnePoint) {
+  const Model m = two_plates_in_contact();
+  State s = initial_state(m);
+  for (int i = 1; i <= 21; ++i) {  // to 1.05 pi
+    bend(s, 0.05 * kPi * i);
+    commit_history(m, s);
+  }
+  const double delta = 0.05 * kPi * kA / 2, force = m.contact.stiffness * std::pow(delta, 1.5);
+  const ContactSummary c = contact_summary(m, s);
+  EXPECT_EQ(c.active, 1);
+  EXPECT_NEAR(c.total_normal_force, force, 1e-12 * force);
+  EXPECT_NEAR(c.max_penetration, delta, 1e-12 * delta);
+  ASSERT_EQ(c.pairs.size(), 1u);
+  EXPECT_EQ(c.pairs[0].a, 0);
+  EXPECT_EQ(c.pairs[0].b, 1);
+  EXPECT_EQ(contact_summary(two_plates(), s).active, 0);  // contact off: no stop
 }
 
 // The joint made a crease (a linear law): its stop acts on the unwrapped fold angle.

@@ -14,6 +14,7 @@
 #include "collision/contact_jacobian.hpp"
 #include "collision/contact_laws.hpp"
 #include "collision/contact_pair.hpp"
+#include "collision/joint_stops.hpp"
 #include "collision/narrowphase.hpp"
 #include "collision/pair_rules.hpp"
 #include "elements/assembler.hpp"
@@ -408,6 +409,34 @@ void commit_contact_history(const Model& model, State& state, bool start) {
   state.contact.candidates = std::move(found);
 }
 
+namespace {
+
+// Joints folded flat press as contact does (collision/joint_stops.hpp): one point each, no
+// friction, a couple and no net force on the pair.
+void add_stop_reports(const Model& model, const State& state, ContactSummary& s) {
+  for (const JointStopReport& r : joint_stop_reports(model, state)) {
+    ++s.active;
+    s.total_normal_force += r.force;
+    s.max_penetration = std::max(s.max_penetration, r.depth);
+    s.points_W.push_back(r.x_W);
+    s.point_normal.push_back(r.force);
+    s.point_penetration.push_back(r.depth);
+    s.point_friction.push_back(0);
+    ContactPairForce pair;
+    pair.a = std::min(r.inner, r.outer);
+    pair.b = std::max(r.inner, r.outer);
+    pair.points = 1;
+    pair.normal_force = r.force;
+    pair.max_penetration = r.depth;
+    s.pairs.push_back(pair);
+  }
+  std::stable_sort(s.pairs.begin(), s.pairs.end(), [](const auto& x, const auto& y) {
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+}
+
+}  // namespace
+
 ContactSummary contact_summary(const Model& model, const State& state) {
   ContactSummary s;
   if (!model.contact.enabled) return s;
@@ -439,6 +468,7 @@ ContactSummary contact_summary(const Model& model, const State& state) {
            }
            s.pairs.push_back(pair);
          });
+  add_stop_reports(model, state, s);
   return s;
 }
 

@@ -27,7 +27,8 @@ struct ContactPairForce {
   Vec3 f_b_W = Vec3::Zero();   ///< resultant force on body b (normal + friction), N
 };
 
-/// What the contact probes record.
+/// What the contact probes record; a joint's stop (collision/joint_stops.hpp) counts as one
+/// point of its two bodies' pair.
 struct ContactSummary {
   int active = 0;                         ///< number of contact points with positive penetration
   double total_normal_force = 0;          ///< N

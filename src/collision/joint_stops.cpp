@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "collision/contact_laws.hpp"
 #include "elements/assembler.hpp"
@@ -32,6 +33,39 @@ double lever(const ElementDef& e) {
   return std::min(e.c_inner_B.norm(), e.c_outer_B.norm());
 }
 
+// The joint's frames at the state: R_WE on the inner body, R_WF on the outer.
+struct JointFrames {
+  Mat3 R_WE, R_WF;
+};
+JointFrames frames(const ElementDef& e, const State& state) {
+  return {state.R_WB[e.inner] * e.R_inner_E, state.R_WB[e.outer] * e.R_outer_F};
+}
+
+// Creases watched from kCreaseWatchedFrom, other joints where the history keeps their rotation
+// (2 rad on).
+bool watched(const Model& model, const State& state, std::size_t k) {
+  if (state.history.size() != model.elements.size()) return false;  // a pose without history
+  if (model.elements[k].crease >= 0)
+    return std::abs(state.history[k].fold_angle) >= kCreaseWatchedFrom;
+  return !state.history[k].rotation_F.isZero();
+}
+
+// A joint's unwrapped rotation vector, a crease's unwrapped fold angle.
+Vec3 joint_theta(const JointFrames& f, const ElementHistory& h) {
+  return rotation_near<double>(f.R_WF.transpose() * f.R_WE, h.rotation_F);
+}
+double crease_alpha(const JointFrames& f, const ElementHistory& h) {
+  return fold_angle<double>(f.R_WE, f.R_WF, h.fold_angle);
+}
+
+// The angle a watched element's stop measures: |alpha| of a crease, |theta| of another joint.
+double stop_angle(const Model& model, const State& state, std::size_t k) {
+  const ElementDef& e = model.elements[k];
+  const JointFrames f = frames(e, state);
+  if (e.crease >= 0) return std::abs(crease_alpha(f, state.history[k]));
+  return joint_theta(f, state.history[k]).norm();
+}
+
 // The couple tau on the inner body (-tau on the outer) and the stop's energy; true when the
 // Jacobian is wanted.
 bool add_couple(Assembler& as, const ElementDef& e, const Vec3& tau, double energy) {
@@ -54,9 +88,9 @@ void add_blocks(Assembler& as, const ElementDef& e, const Mat3& d_inner, const M
 // with w = m theta / |theta|, as a plate cell's side.
 void add_joint_stop(const Model& model, const State& state, int k, Assembler& as) {
   const ElementDef& e = model.elements[k];
-  const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
-  const Mat3 R_WE = state.R_WB[e.inner] * e.R_inner_E;
-  const Vec3 theta = rotation_near<double>(R_WF.transpose() * R_WE, state.history[k].rotation_F);
+  const JointFrames f = frames(e, state);
+  const Mat3& R_WF = f.R_WF;
+  const Vec3 theta = joint_theta(f, state.history[k]);
   const double angle = theta.norm();
   StopMoment s;
   if (!stop_moment(model.contact, angle, lever(e), s)) return;
@@ -76,16 +110,15 @@ void add_joint_stop(const Model& model, const State& state, int k, Assembler& as
 // -U' grad(alpha) on the inner body, as the crease law's (elements/bushing.hpp).
 void add_crease_stop(const Model& model, const State& state, int k, Assembler& as) {
   const ElementDef& e = model.elements[k];
-  const Mat3 R_WF = state.R_WB[e.outer] * e.R_outer_F;
-  const Mat3 R_WE = state.R_WB[e.inner] * e.R_inner_E;
-  const double alpha = fold_angle<double>(R_WE, R_WF, state.history[k].fold_angle);
+  const JointFrames f = frames(e, state);
+  const double alpha = crease_alpha(f, state.history[k]);
   StopMoment s;
   if (!stop_moment(model.contact, std::abs(alpha), lever(e), s)) return;
   const double sign = alpha > 0 ? 1.0 : -1.0, dU = sign * s.moment;
-  const Vec3 grad = fold_angle_gradient<double>(R_WE, R_WF);
+  const Vec3 grad = fold_angle_gradient<double>(f.R_WE, f.R_WF);
   if (!add_couple(as, e, -dU * grad, s.energy)) return;
   const Mat3 d_inner =
-      -s.slope * grad * grad.transpose() - dU * fold_gradient_derivative(R_WE, R_WF);
+      -s.slope * grad * grad.transpose() - dU * fold_gradient_derivative(f.R_WE, f.R_WF);
   add_blocks(as, e, d_inner, -d_inner + dU * hat(grad));  // grad turns with the outer body
 }
 
@@ -94,14 +127,30 @@ void add_crease_stop(const Model& model, const State& state, int k, Assembler& a
 void add_joint_stops(const Model& model, const State& state, Assembler& as) {
   if (!model.contact.enabled) return;
   for (std::size_t k = 0; k < model.elements.size(); ++k) {
+    if (!watched(model, state, k)) continue;
     const int i = static_cast<int>(k);
     if (model.elements[k].crease >= 0) {
-      if (std::abs(state.history[k].fold_angle) >= kCreaseWatchedFrom)
-        add_crease_stop(model, state, i, as);
-    } else if (!state.history[k].rotation_F.isZero()) {  // kept from 2 rad on
+      add_crease_stop(model, state, i, as);
+    } else {
       add_joint_stop(model, state, i, as);
     }
   }
+}
+
+std::vector<JointStopReport> joint_stop_reports(const Model& model, const State& state) {
+  std::vector<JointStopReport> out;
+  if (!model.contact.enabled) return out;
+  for (std::size_t k = 0; k < model.elements.size(); ++k) {
+    if (!watched(model, state, k)) continue;
+    const ElementDef& e = model.elements[k];
+    const double r = lever(e), angle = stop_angle(model, state, k);
+    StopMoment s;
+    if (!stop_moment(model.contact, angle, r, s)) continue;
+    const int shorter = e.c_inner_B.norm() <= e.c_outer_B.norm() ? e.inner : e.outer;
+    out.push_back({static_cast<int>(k), e.inner, e.outer, (angle - kPi) * r, s.moment / r,
+                   state.p_W[shorter]});
+  }
+  return out;
 }
 
 }  // namespace finseg
