@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "cli_test_util.hpp"
@@ -37,6 +38,7 @@ State busy_state(const Model& m) {
   }
   for (std::size_t k = 0; k < s.history.size(); ++k)
     s.history[k] = {0.1 * k + 1e-9, int(k), k % 2 == 1, Vec3(3.5 + k, -0.2, 1e-7 * k)};
+  s.history[1].rotation_F = Vec3::Zero();  // a joint turned less than 2 rad: not written
   s.contact.anchors = {
       {3, Vec3(1, 2, 3) / 7, Vec3(-1, 0, 1) / 9, 0.25, -1, true, 2.5e-4},
       {18446744073709551615ull, Vec3::Zero(), Vec3::Ones(), 0, 1, false, -1, 3e-5 / 7}};
@@ -62,6 +64,9 @@ TEST(StateFile, RoundTripIsExact) {
   write_state_file(dir / "state.json", m, {s, "0123456789abcdef"});
   const StateSnapshot r = read_state_file(dir / "state.json", m);
   EXPECT_EQ(r.scene_hash, "0123456789abcdef");
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "state.json"));
+  EXPECT_TRUE(j["elements"][0].contains("rotation_F_rad"));
+  EXPECT_FALSE(j["elements"][1].contains("rotation_F_rad"));
   const State& q = r.state;
   EXPECT_EQ(q.t, s.t);
   EXPECT_EQ(q.load_scale, s.load_scale);

@@ -281,10 +281,10 @@ nlohmann::json state_json(const Model& model, const StateSnapshot& snap) {
   }
   json elements = json::array();
   for (const ElementHistory& h : s.history) {
-    elements.push_back({{"fold_angle_rad", h.fold_angle},
-                        {"openings", h.openings},
-                        {"opened", h.opened},
-                        {"rotation_F_rad", vec_json(h.rotation_F)}});
+    json e = {{"fold_angle_rad", h.fold_angle}, {"openings", h.openings}, {"opened", h.opened}};
+    // Zero (absent) for all but joints turned 2 rad or more: 1 MB less at 10^4 segments.
+    if (h.rotation_F != Vec3::Zero()) e["rotation_F_rad"] = vec_json(h.rotation_F);
+    elements.push_back(std::move(e));
   }
   json j = {{"format", kFormat},
             {"version", kVersion},

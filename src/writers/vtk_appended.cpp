@@ -25,19 +25,30 @@ std::string vtk_zlib_block(const std::string& bytes, std::size_t block_size) {
   append_u64(header, blocks);
   append_u64(header, block_size);
   append_u64(header, n % block_size);
+  z_stream z{};
+  // Run-length matches only: doubles of positions hardly compress by matches (an 11 200-segment
+  // frame 8.57 MB: 6.65 MB at level 1 in 130 ms, 7.09 MB run-length in 62 ms).
+  if (deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15, 8, Z_RLE) != Z_OK) {
+    throw std::runtime_error("zlib deflateInit2 failed");
+  }
+  std::string out;
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::size_t len = std::min(block_size, n - b * block_size);
-    uLongf out_len = compressBound(len);
-    std::string out(out_len, '\0');
-    // The fastest level: doubles of positions hardly compress (an 11 200-segment frame 8.6 ->
-    // 6.6 MB at level 1 and at the default 6) and level 6 took 1.7 times as long.
-    const int rc =
-        compress2(reinterpret_cast<Bytef*>(out.data()), &out_len,
-                  reinterpret_cast<const Bytef*>(bytes.data() + b * block_size), len, Z_BEST_SPEED);
-    if (rc != Z_OK) throw std::runtime_error(fmt::format("zlib compress2 failed ({})", rc));
+    out.resize(deflateBound(&z, len));
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data() + b * block_size));
+    z.avail_in = static_cast<uInt>(len);
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = static_cast<uInt>(out.size());
+    const int rc = deflate(&z, Z_FINISH);
+    if (rc != Z_STREAM_END || deflateReset(&z) != Z_OK) {
+      deflateEnd(&z);
+      throw std::runtime_error(fmt::format("zlib deflate failed ({})", rc));
+    }
+    const std::size_t out_len = out.size() - z.avail_out;
     append_u64(header, out_len);
     body.append(out.data(), out_len);
   }
+  deflateEnd(&z);
   return header + body;
 }
 
