@@ -29,8 +29,14 @@ bool stop_moment(const ContactDef& c, double angle, double r, StopMoment& out) {
   return true;
 }
 
-double lever(const ElementDef& e) {
-  return std::min(e.c_inner_B.norm(), e.c_outer_B.norm());
+// Where the stop presses: the shorter segment's centroid, at r from the joint point.
+struct Lever {
+  double r;
+  int body;
+};
+Lever lever(const ElementDef& e) {
+  const double inner = e.c_inner_B.norm(), outer = e.c_outer_B.norm();
+  return inner <= outer ? Lever{inner, e.inner} : Lever{outer, e.outer};
 }
 
 // The joint's frames at the state: R_WE on the inner body, R_WF on the outer.
@@ -93,7 +99,7 @@ void add_joint_stop(const Model& model, const State& state, int k, Assembler& as
   const Vec3 theta = joint_theta(f, state.history[k]);
   const double angle = theta.norm();
   StopMoment s;
-  if (!stop_moment(model.contact, angle, lever(e), s)) return;
+  if (!stop_moment(model.contact, angle, lever(e).r, s)) return;
   const Vec3 u = theta / angle, w = s.moment * u;
   const Mat3 Jl_inv = left_jacobian_inverse(theta);
   const Vec3 g = Jl_inv.transpose() * w;
@@ -113,7 +119,7 @@ void add_crease_stop(const Model& model, const State& state, int k, Assembler& a
   const JointFrames f = frames(e, state);
   const double alpha = crease_alpha(f, state.history[k]);
   StopMoment s;
-  if (!stop_moment(model.contact, std::abs(alpha), lever(e), s)) return;
+  if (!stop_moment(model.contact, std::abs(alpha), lever(e).r, s)) return;
   const double sign = alpha > 0 ? 1.0 : -1.0, dU = sign * s.moment;
   const Vec3 grad = fold_angle_gradient<double>(f.R_WE, f.R_WF);
   if (!add_couple(as, e, -dU * grad, s.energy)) return;
@@ -143,12 +149,12 @@ std::vector<JointStopReport> joint_stop_reports(const Model& model, const State&
   for (std::size_t k = 0; k < model.elements.size(); ++k) {
     if (!watched(model, state, k)) continue;
     const ElementDef& e = model.elements[k];
-    const double r = lever(e), angle = stop_angle(model, state, k);
+    const Lever l = lever(e);
+    const double angle = stop_angle(model, state, k);
     StopMoment s;
-    if (!stop_moment(model.contact, angle, r, s)) continue;
-    const int shorter = e.c_inner_B.norm() <= e.c_outer_B.norm() ? e.inner : e.outer;
-    out.push_back({static_cast<int>(k), e.inner, e.outer, (angle - kPi) * r, s.moment / r,
-                   state.p_W[shorter]});
+    if (!stop_moment(model.contact, angle, l.r, s)) continue;
+    out.push_back({static_cast<int>(k), e.inner, e.outer, (angle - kPi) * l.r, s.moment / l.r,
+                   state.p_W[l.body]});
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #include "elements/joint_rotation_history.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "elements/bushing.hpp"
 
@@ -32,10 +33,14 @@ void commit_joint_rotations(const Model& model, State& state) {
     const ElementDef& e = model.elements[k];
     if (e.crease < 0 && e.K.tail<3>().any()) commit_joint(model, state, k);
   }
+  // Plate-cell sides without a rotational spring of their own, once each (two cells share one).
+  std::vector<char> done(model.elements.size(), 0);
   for (const PlateCellDef& cell : model.plate_cells) {
     for (const PlateCellSide& side : cell.sides) {
       const ElementDef& e = model.elements[side.element];
-      if (e.crease < 0 && !e.K.tail<3>().any()) commit_joint(model, state, side.element);
+      if (e.crease >= 0 || e.K.tail<3>().any() || done[side.element]) continue;
+      done[side.element] = 1;
+      commit_joint(model, state, side.element);
     }
   }
 }
