@@ -173,5 +173,27 @@ TEST(NewtonMatrix, RotationBlockOperationsMatchDenseArithmetic) {
   }
 }
 
+// A sum in place on A's pattern: the bits of Eigen's sparse sum B + A where B's entries fall on
+// A's pattern; refused, A unchanged, where one does not.
+TEST(NewtonMatrix, SumOnThePatternIsEigensSum) {
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Random(8, 8);
+  for (int k = 0; k < 8; ++k) dense(k, (3 * k + 1) % 8) = 0;  // holes in A's pattern
+  const Eigen::SparseMatrix<double> A = dense.sparseView();
+  Eigen::MatrixXd inside = Eigen::MatrixXd::Zero(8, 8);
+  for (int k = 0; k < 8; ++k) inside(k, k) = 0.1 + k;  // the diagonal: on the pattern
+  inside(2, 5) = -3.0;
+  Eigen::SparseMatrix<double> on = A;
+  ASSERT_TRUE(add_on_pattern(inside.sparseView(), on));
+  const Eigen::SparseMatrix<double> eigen_sum =
+      Eigen::SparseMatrix<double>(inside.sparseView()) + A;
+  ASSERT_EQ(on.nonZeros(), A.nonZeros());
+  EXPECT_EQ(Eigen::MatrixXd(on), Eigen::MatrixXd(eigen_sum));
+  Eigen::MatrixXd outside = inside;
+  outside(0, 1) = 1.0;  // a hole of A
+  Eigen::SparseMatrix<double> off = A;
+  EXPECT_FALSE(add_on_pattern(outside.sparseView(), off));
+  EXPECT_EQ(Eigen::MatrixXd(off), dense);
+}
+
 }  // namespace newton_matrix_test
 }  // namespace finseg

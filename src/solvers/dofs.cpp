@@ -136,6 +136,27 @@ void right_multiply_rotation_columns(const Model& model, const RotationBlocks& T
   }
 }
 
+bool add_on_pattern(const Eigen::SparseMatrix<double>& B, Eigen::SparseMatrix<double>& A) {
+  if (!A.isCompressed() || B.rows() != A.rows() || B.cols() != A.cols()) return false;
+  std::vector<int> at;  // A's entry of each of B's, all found before any is written
+  at.reserve(static_cast<std::size_t>(B.nonZeros()));
+  for (int c = 0; c < B.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) {
+      at.push_back(entry_index(A, static_cast<int>(it.row()), c));
+      if (at.back() < 0) return false;
+    }
+  }
+  double* value = A.valuePtr();
+  std::size_t k = 0;
+  for (int c = 0; c < B.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(B, c); it; ++it) {
+      value[at[k]] = it.value() + value[at[k]];
+      ++k;
+    }
+  }
+  return true;
+}
+
 Eigen::VectorXd velocity_vector(const Model& model, const State& state) {
   Eigen::VectorXd v(model.num_dofs);
   for (size_t i = 0; i < model.bodies.size(); ++i) {

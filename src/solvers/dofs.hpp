@@ -38,6 +38,10 @@ void add_rotation_blocks(const Model& model, const RotationBlocks& B, double sca
 void right_multiply_rotation_columns(const Model& model, const RotationBlocks& T,
                                      Eigen::SparseMatrix<double>& A);
 
+/// A = B + A in A's storage, each entry summed as B_ij + A_ij (the bits of Eigen's sparse sum),
+/// where every stored entry of B falls on A's pattern (A compressed); else false, A unchanged.
+bool add_on_pattern(const Eigen::SparseMatrix<double>& B, Eigen::SparseMatrix<double>& A);
+
 /// Velocities (v_W, w_W) of the free bodies as one vector, and back.
 Eigen::VectorXd velocity_vector(const Model& model, const State& state);
 void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v);

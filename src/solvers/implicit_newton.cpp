@@ -104,7 +104,16 @@ class Linearisation {
     }
     right_multiply_rotation_columns(
         model_, pose_increment_jacobians(model_, map_.dq0 + map_.cq * x_at), pose);
-    A = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv + map_.cq * pose;
+    // The sum in pose's storage where M's and dv's entries fall on its pattern (the Jacobian's
+    // diagonal blocks hold them): no new matrix of the Jacobian's size (30 ms at 10^4
+    // segments), the same values.
+    Eigen::SparseMatrix<double> M_dv = mass_matrix(model_, state_) - (res_.s * map_.cv) * dv;
+    pose *= map_.cq;
+    if (add_on_pattern(M_dv, pose)) {
+      A.swap(pose);  // the scratch takes A's old storage, to be refilled
+    } else {
+      A = M_dv + pose;
+    }
   }
 
   // A is dr/dx; false where friction took its secant (docs/solvers.md, "Friction's secant"):
