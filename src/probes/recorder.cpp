@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "collision/contact_forces.hpp"
+#include "core/allocator.hpp"
 #include "core/so3.hpp"
 #include "elements/drive_gauge.hpp"
 #include "elements/element_load.hpp"
@@ -218,6 +219,7 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
     for (const ContactPairForce& p : contact.pairs) tables_[k].pair_rows.push_back({last_x_, p});
   }
   if (options_.frames) {
+    const MappedAllocations kept_apart;
     frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W, state.v_W, state.w_W,
                        segment_fields(model_, state, forces, contact), contact.point_normal,
                        contact.point_penetration, contact.point_friction});
