@@ -27,7 +27,7 @@ void keep_freed_memory() {
 
 MappedAllocations::MappedAllocations() {
   if (!heap_only) return;
-  mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+  mallopt(M_MMAP_THRESHOLD, 0);
   mallopt(M_MMAP_MAX, 1 << 16);
 }
 

@@ -12,11 +12,12 @@ namespace finseg {
 /// and a quarter of a step on the 6 300-segment cone. Process-wide; once per process.
 void keep_freed_memory();
 
-/// While alive (after keep_freed_memory), blocks of 128 KiB and more are mapped on their own,
-/// as glibc does by default, instead of taken from the heap. For data kept to the end of a
-/// run (the recorded frames): in the heap each such block splits a hole that a Newton
-/// matrix is reused from, and the heap grows by a matrix, at 10^4 segments about 15 MB per
-/// output for 2.7 MB of frame (BENCHMARKS.md). On the thread that records, between solves.
+/// While alive (after keep_freed_memory), every block is mapped on its own instead of taken
+/// from the heap (a page at least: for a few blocks, not for many small ones). For data kept
+/// to the end of a run (the recorded frames): in the heap even a small block splits a hole
+/// that a Newton matrix is reused from, and the heap grows by a matrix, at 10^4 segments by
+/// about 15 MB per output for 2.7 MB of frame (BENCHMARKS.md). On the thread that records,
+/// between solves.
 class MappedAllocations {
  public:
   MappedAllocations();

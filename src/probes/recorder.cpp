@@ -219,10 +219,11 @@ void RunRecorder::record(const State& state, const BodyForces& forces) {
     for (const ContactPairForce& p : contact.pairs) tables_[k].pair_rows.push_back({last_x_, p});
   }
   if (options_.frames) {
-    const MappedAllocations kept_apart;
+    const SegmentFields fields = segment_fields(model_, state, forces, contact);
+    const MappedAllocations kept_apart;  // the frame's copies only
     frames_.push_back({state.t, state.p_W, state.R_WB, contact.points_W, state.v_W, state.w_W,
-                       segment_fields(model_, state, forces, contact), contact.point_normal,
-                       contact.point_penetration, contact.point_friction});
+                       fields, contact.point_normal, contact.point_penetration,
+                       contact.point_friction});
   }
   if (options_.phases && !model_.drives.empty()) {
     samples_.push_back(
