@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_util.hpp"
+#include "core/blas_kernels.hpp"
 #include "core/version.hpp"
 #include "test_paths.hpp"
 #include "writers/provenance.hpp"
@@ -102,6 +103,10 @@ TEST(Provenance, SummaryRecordsHashesDateWarningsAndNewProbes) {
   const auto& p = j.at("provenance");
   EXPECT_EQ(p.at("finseg_version"), version());
   EXPECT_EQ(p.at("git_revision"), git_revision());
+  // The kernels the run's BLAS ran: the CPU's own where OpenBLAS fell back to Prescott's
+  // (core/blas_kernels.hpp), as in this process once it has factored.
+  use_cpu_blas_kernels();
+  EXPECT_EQ(p.at("blas_kernels"), blas_kernels());
   EXPECT_TRUE(matches(p.at("date_utc").get<std::string>(), "9999-99-99T99:99:99Z"))
       << p.at("date_utc");
   EXPECT_EQ(p.at("scene").at("file"), "s.yaml");

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/blas_kernels.hpp"
+
 namespace finseg {
 namespace {
 
@@ -114,6 +116,7 @@ class PatternCache {
 class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
  public:
   explicit Cholmod(Eigen::CholmodMode mode) {
+    use_cpu_blas_kernels();
     setMode(mode);
     cholmod().print = 0;
   }
@@ -150,6 +153,7 @@ constexpr Eigen::Index kCompareOrderings = 10000;
 class Umfpack {
  public:
   Umfpack() {
+    use_cpu_blas_kernels();
     umfpack_di_defaults(control_);
     control_[UMFPACK_PRL] = 0;  // silent: a singular matrix is an expected event here
     // AMD on the pattern of A + A^T, diagonal pivots preferred (kept unless below 0.001 of

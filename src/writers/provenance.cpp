@@ -12,6 +12,7 @@
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include "core/blas_kernels.hpp"
 #include "core/version.hpp"
 #include "elements/crease_law.hpp"
 #include "scene/state_file.hpp"
@@ -82,6 +83,7 @@ nlohmann::json provenance_json(const Scene& scene) {
   for (const std::string& f : scene_data_files(scene)) data.push_back(hashed(f));
   nlohmann::json j = {{"finseg_version", version()},
                       {"git_revision", git_revision()},
+                      {"blas_kernels", blas_kernels()},
                       {"date_utc", utc_now_iso8601()},
                       {"scene", hashed(scene.file)},
                       {"data_files", data},
