@@ -298,6 +298,47 @@ TEST(LinearSolve, AlternatingPatternsKeepTheirAnalyses) {
   EXPECT_EQ(linear_solve_counters().factorizations, 6);
 }
 
+// A pattern cache keeps the numeric factor of its most recent pattern only (linear_solve.cpp):
+// a pattern solved again after others is factored anew on its kept analysis, which must give
+// the bits of its first solve, on every path: supernodal L L^T (120 x 120 grid), simplicial
+// L D L^T of an indefinite matrix (after the failed L L^T), and UMFPACK's LU; and a kept
+// factorization that returns to a pattern solves with the new factor.
+TEST(LinearSolve, APatternSolvedAgainAfterOthersGivesItsFirstBits) {
+  const std::vector<double> lambda = laplacian_eigenvalues(12);
+  const SpMat cases[] = {grid_matrix(120, -0.5), grid_matrix(12, 0.5 * (lambda[3] + lambda[4])),
+                         grid_matrix(20, -0.5, 0.5)};
+  const LinearSolvePath paths[] = {LinearSolvePath::Cholesky, LinearSolvePath::LDLT,
+                                   LinearSolvePath::LU};
+  for (int c = 0; c < 3; ++c) {
+    const SpMat& A = cases[c];
+    const Eigen::VectorXd b = A * known_solution(static_cast<int>(A.rows()));
+    Eigen::VectorXd x_first, x_again, y;
+    LinearSolveInfo info;
+    ASSERT_TRUE(sparse_solve(A, b, x_first, &info));
+    EXPECT_EQ(info.path, paths[c]) << c;
+    for (int k = 0; k < kCachedPatterns - 1; ++k) {  // A's slot stays cached, behind others
+      const SpMat other = grid_matrix(10 + k, -0.5, c == 2 ? 0.5 : 0.0);
+      ASSERT_TRUE(sparse_solve(other, Eigen::VectorXd::Ones(other.rows()), y));
+    }
+    const int analyses = linear_solve_counters().analyses;
+    ASSERT_TRUE(sparse_solve(A, b, x_again));
+    EXPECT_EQ(linear_solve_counters().analyses, analyses) << c;  // the kept analysis
+    EXPECT_EQ(x_again, x_first) << c;
+  }
+  const SymmetricMatrix S1 = SymmetricMatrix::symmetric_part_of(grid_matrix(120, -0.5));
+  const SymmetricMatrix S2 = SymmetricMatrix::symmetric_part_of(grid_matrix(100, -0.5));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(S1.size(), -1, 2);
+  KeptFactorization kept;
+  Eigen::MatrixXd X;
+  Eigen::VectorXd x_first, x_again;
+  ASSERT_TRUE(kept.factor_and_solve(S1, Eigen::MatrixXd(b), X));
+  ASSERT_TRUE(kept.solve(b, x_first));
+  ASSERT_TRUE(kept.factor_and_solve(S2, Eigen::MatrixXd(Eigen::VectorXd::Ones(S2.size())), X));
+  ASSERT_TRUE(kept.factor_and_solve(S1, Eigen::MatrixXd(b), X));
+  ASSERT_TRUE(kept.solve(b, x_again));
+  EXPECT_EQ(x_again, x_first);
+}
+
 // From 10 000 rows on the analysis compares AMD with METIS (linear_solve.cpp): a 150 x 150 grid
 // (22 500 rows) is solved by its Cholesky to the classical bound.
 TEST(LinearSolve, LargeSystemWithComparedOrderingsSolves) {
