@@ -14,6 +14,7 @@ Usage: python3 bench/bench_cone.py [BUILD_DIR] [--subdivisions N] [--outputs-off
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -93,7 +94,7 @@ def main():
           f"10 minutes; outputs {'off' if a.outputs_off else 'on'}; BLAS kernels: "
           f"{kernels or 'not OpenBLAS'}; work folder: {work if a.keep else '(removed)'}")
     if not a.keep:
-        subprocess.run(["rm", "-rf", str(work)], check=False)
+        shutil.rmtree(work, ignore_errors=True)
 
 
 if __name__ == "__main__":
