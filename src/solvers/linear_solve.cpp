@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/blas_kernels.hpp"
+#include "solvers/block_ordering.hpp"
 
 namespace finseg {
 namespace {
@@ -126,6 +127,19 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
     cholmod().print = 0;
   }
   bool is_ll() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_ll != 0; }
+  // The analysis of S's pattern (lower triangle) with the ordering `perm` (CHOLMOD's Perm).
+  void analyse_with(const SpMat& S, std::vector<int>& perm) {
+    if (m_cholmodFactor != nullptr) cholmod_free_factor(&m_cholmodFactor, &cholmod());
+    cholmod_sparse A = Eigen::viewAsCholmod(S.selfadjointView<Eigen::Lower>());
+    const int nmethods = cholmod().nmethods;
+    cholmod().nmethods = 1;  // method[0], CHOLMOD_GIVEN: perm
+    m_cholmodFactor = cholmod_analyze_p(&A, perm.data(), nullptr, 0, &cholmod());
+    cholmod().nmethods = nmethods;
+    m_isInitialized = true;
+    m_info = m_cholmodFactor != nullptr ? Eigen::Success : Eigen::NumericalIssue;
+    m_analysisIsOk = m_cholmodFactor != nullptr;
+    m_factorizationIsOk = false;
+  }
   // Frees the numeric factor, keeps the analysis (the next factorize() allocates it again).
   void release_numeric() {
     cholmod_factor* L = m_cholmodFactor;
@@ -148,9 +162,10 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
   }
 };
 
-// From this many rows on, the analyses try both AMD and METIS (nested dissection) and keep
-// the better ordering (CHOLMOD: fewer flops; CHOLMOD's default tries METIS only where AMD
-// fills much; UMFPACK: UMFPACK_ORDERING_BEST). On the lab cone's Newton matrices METIS
+// From this many rows on, the analyses try AMD and nested dissection and keep the better
+// ordering (CHOLMOD: fewer flops, on the graph of the 6 x 6 blocks where the matrix has them,
+// block_ordering.hpp, else AMD and METIS on the matrix; CHOLMOD's default tries METIS only
+// where AMD fills much; UMFPACK: UMFPACK_ORDERING_BEST). On the lab cone's Newton matrices METIS
 // factored 1.2-1.5x faster from 16 704 rows (2 800 segments) on, and on the 10^4-segment sheet
 // it needs 2.28e9 flops against AMD's 2.57e9; the analysis costs about twice AMD's, once per
 // pattern (BENCHMARKS.md). Below, as before: the tests' models (up to about 6 000 dofs) keep
@@ -245,13 +260,24 @@ struct SymmetricSlot {
   }
 };
 
+// The analysis of S's pattern. From kCompareOrderings rows on, where S is made of 6 x 6
+// blocks (block_ordering: the better of AMD and nested dissection on the graph of the
+// blocks, a fraction of an ordering's cost on S), else with the better of AMD and METIS on S.
+void analyse(Cholmod& f, const SpMat& S) {
+  if (S.rows() < kCompareOrderings) return f.analyzePattern(S);
+  std::optional<std::vector<int>> perm = block_ordering(S, f.cholmod());
+  if (perm) return f.analyse_with(S, *perm);
+  const int nmethods = f.cholmod().nmethods;
+  f.cholmod().nmethods = 3;  // the given permutation (none here, skipped), AMD and METIS
+  f.analyzePattern(S);
+  f.cholmod().nmethods = nmethods;
+}
+
 bool factor(Cholmod& f, bool& analysed, const SpMat& S) {
-  const bool analyse = !analysed;
+  const bool first = !analysed;
   analysed = true;
-  // nmethods = 3: the given permutation (none here, skipped), AMD and METIS.
-  if (analyse && S.rows() >= kCompareOrderings) f.cholmod().nmethods = 3;
   timed(
-      analyse, [&] { f.analyzePattern(S); }, [&] { f.factorize(S); });
+      first, [&] { analyse(f, S); }, [&] { f.factorize(S); });
   return f.info() == Eigen::Success;
 }
 
