@@ -30,6 +30,31 @@ Model loaded_strip() {
   return build_cantilever_model(s);
 }
 
+// Full Newton's first two steps of h from rest (each converged, else the test fails).
+struct FullSteps {
+  Step first, second;
+};
+FullSteps full_newton_steps(const Model& model, double h, double tol) {
+  FullSteps f;
+  f.first = backward_euler(model, initial_state(model), h, tol, nullptr);
+  EXPECT_TRUE(f.first.converged);
+  f.second = backward_euler(model, f.first.end, h, tol, nullptr);
+  EXPECT_TRUE(f.second.converged);
+  return f;
+}
+
+// A step that had to make a new matrix: solved by GMRES on the kept factor where Krylov steps
+// are on (no factorization), else factored.
+void expect_new_matrix(const Step& kept, bool krylov) {
+  if (krylov) {
+    EXPECT_GE(kept.stats.krylov_steps, 1);
+    EXPECT_EQ(kept.stats.factorizations, 0);
+  } else {
+    EXPECT_GE(kept.stats.factorizations, 1);
+    EXPECT_EQ(kept.stats.krylov_steps, 0);
+  }
+}
+
 TEST(ModifiedNewton, KeptMatrixReachesFullNewtonsStepOnALoadedStrip) {
   const Model model = loaded_strip();
   const double h = 1e-5, tol = 1e-12;  // pose tolerance, m and rad
@@ -83,15 +108,33 @@ TEST(ModifiedNewton, MatrixOfFreeFlightIsRenewedWhenContactSwitchesOn) {
     const Step kept = backward_euler(m, flight.end, h, tol, &reuse);
     ASSERT_TRUE(full.converged && kept.converged);
     ASSERT_LT(full.end.p_W[1].z(), kThick);  // in contact
-    if (krylov) {
-      // The contact adds a stiffness of low rank to M: GMRES preconditioned by M's factor
-      // solves the new matrix in a few iterations, and no factorization is needed.
-      EXPECT_GE(kept.stats.krylov_steps, 1);
-      EXPECT_EQ(kept.stats.factorizations, 0);
-    } else {
-      EXPECT_GE(kept.stats.factorizations, 1);
-      EXPECT_EQ(kept.stats.krylov_steps, 0);
-    }
+    // The contact adds a stiffness of low rank to M: GMRES preconditioned by M's factor
+    // solves the new matrix in a few iterations, and no factorization is needed.
+    expect_new_matrix(kept, krylov);
+    EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol) << krylov;
+  }
+}
+
+// After an event (a contact point made or lost, a crease snapped: the time stepper marks the
+// kept matrix stale) the next step makes a new matrix even where the kept one would still
+// contract; with Krylov steps the kept factor preconditions it, without them it is factored.
+TEST(ModifiedNewton, AnEventRenewsTheMatrixWhichTheKeptFactorMayPrecondition) {
+  const Model model = loaded_strip();
+  const double h = 1e-5, tol = 1e-12;
+  const State start = initial_state(model);
+  const FullSteps f = full_newton_steps(model, h, tol);
+  const Step &full1 = f.first, &full = f.second;
+  for (bool krylov : {false, true}) {
+    NewtonReuse reuse;
+    reuse.max_age = 20;
+    reuse.krylov = krylov;
+    ASSERT_TRUE(backward_euler(model, start, h, tol, &reuse).converged);
+    reuse.stale = true;
+    const Step kept = backward_euler(model, full1.end, h, tol, &reuse);
+    ASSERT_TRUE(kept.converged) << krylov;
+    EXPECT_FALSE(reuse.stale);
+    EXPECT_GE(kept.stats.jacobian_evaluations, 1) << krylov;
+    expect_new_matrix(kept, krylov);
     EXPECT_LT(h * (kept.v - full.v).lpNorm<Eigen::Infinity>(), 2 * tol) << krylov;
   }
 }
@@ -102,12 +145,9 @@ TEST(ModifiedNewton, MatrixOfFreeFlightIsRenewedWhenContactSwitchesOn) {
 TEST(ModifiedNewton, SymmetricPartOfANearlySymmetricMatrixReachesFullNewtonsStep) {
   const Model model = loaded_strip();
   const double h = 1e-5, tol = 1e-12;
-  const State start = initial_state(model);
-  const Step full1 = backward_euler(model, start, h, tol, nullptr);
-  ASSERT_TRUE(full1.converged);
-  const State& moving = full1.end;  // loaded and moving: the skew part is not zero
-  const Step full = backward_euler(model, moving, h, tol, nullptr);
-  ASSERT_TRUE(full.converged);
+  const FullSteps f = full_newton_steps(model, h, tol);
+  const State& moving = f.first.end;  // loaded and moving: the skew part is not zero
+  const Step& full = f.second;
   for (const double allowed : {0.0, 1e-3}) {
     NewtonReuse reuse;
     reuse.max_age = 20;

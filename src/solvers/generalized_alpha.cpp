@@ -78,7 +78,7 @@ class GeneralizedAlpha final : public TimeStepper {
   }
 
   void accept(bool restart) override {
-    if (restart) reuse_.matrix.clear();  // an event changed the forces' make-up
+    if (restart) reuse_.stale = true;  // an event changed the forces' make-up
     vdot_ = next_vdot_;
     a_ = restart ? next_vdot_ : next_a_;
     h_ = next_h_;

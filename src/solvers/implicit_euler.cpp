@@ -50,7 +50,7 @@ class BackwardEuler final : public TimeStepper {
   // An event changed the forces' make-up: the next step starts with a new matrix, and from
   // its start velocity (the last step's change belongs to forces that no longer act).
   void accept(bool restart) override {
-    if (restart) reuse_.matrix.clear();
+    if (restart) reuse_.stale = true;
     last_ = restart ? LastStep{} : tried_;
   }
   // At outputs, so that a run resumed there starts its Newton iterations the same way.

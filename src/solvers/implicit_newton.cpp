@@ -246,8 +246,9 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
                      const NewtonResidual& res, int max_iterations, double pose_tol, bool symmetric,
                      Linearisation& lin, Eigen::VectorXd& x, SolverStats& stats, NewtonReuse& k) {
   const double s_cq = res.s * map.cq, s_cv = res.s * map.cv;
-  bool renew = !k.matrix.valid() || k.symmetric != symmetric || k.age >= k.max_age ||
+  bool renew = k.stale || !k.matrix.valid() || k.symmetric != symmetric || k.age >= k.max_age ||
                !near(s_cq, k.s_cq) || !near(s_cv, k.s_cv);
+  k.stale = false;
   lin.at(x, renew);
   double dx_prev = 0;       // |cq dx| of the last iteration on the same matrix in this solve
   bool exact_only = false;  // a symmetric part stopped contracting in this solve: LU from here
