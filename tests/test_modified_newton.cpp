@@ -30,16 +30,14 @@ Model loaded_strip() {
   return build_cantilever_model(s);
 }
 
-// Full Newton's first two steps of h from rest (each converged, else the test fails).
+// Full Newton's first two steps of h from rest.
 struct FullSteps {
   Step first, second;
 };
 FullSteps full_newton_steps(const Model& model, double h, double tol) {
   FullSteps f;
   f.first = backward_euler(model, initial_state(model), h, tol, nullptr);
-  EXPECT_TRUE(f.first.converged);
   f.second = backward_euler(model, f.first.end, h, tol, nullptr);
-  EXPECT_TRUE(f.second.converged);
   return f;
 }
 
@@ -123,6 +121,7 @@ TEST(ModifiedNewton, AnEventRenewsTheMatrixWhichTheKeptFactorMayPrecondition) {
   const double h = 1e-5, tol = 1e-12;
   const State start = initial_state(model);
   const FullSteps f = full_newton_steps(model, h, tol);
+  ASSERT_TRUE(f.first.converged && f.second.converged);
   const Step &full1 = f.first, &full = f.second;
   for (bool krylov : {false, true}) {
     NewtonReuse reuse;
@@ -146,6 +145,7 @@ TEST(ModifiedNewton, SymmetricPartOfANearlySymmetricMatrixReachesFullNewtonsStep
   const Model model = loaded_strip();
   const double h = 1e-5, tol = 1e-12;
   const FullSteps f = full_newton_steps(model, h, tol);
+  ASSERT_TRUE(f.first.converged && f.second.converged);
   const State& moving = f.first.end;  // loaded and moving: the skew part is not zero
   const Step& full = f.second;
   for (const double allowed : {0.0, 1e-3}) {

@@ -42,10 +42,10 @@ struct NewtonReuse {
   double approximate_asymmetry = 1e-3;
   bool approximate = false;  ///< the kept factor is of the symmetric part of a nonsymmetric matrix
   int age = 0;               ///< iterations it has served
+  double eta = 1;            ///< theta / (1 - theta) of its last measured contraction rate theta
   /// An event changed the forces' make-up (a contact point made or lost, a crease snapped):
   /// the next iteration makes a new matrix, which the kept factor may still precondition.
   bool stale = false;
-  double eta = 1;  ///< theta / (1 - theta) of its last measured contraction rate theta
   /// Forgets the matrix and its history (a run resumed from here starts the same way).
   void reset() {
     matrix.clear();
