@@ -499,13 +499,55 @@ TEST(LinearSolve, KeptFactorizationSolvesUnrefinedToTheClassicalBound) {
   const double cond = svd.singularValues()(0) / svd.singularValues().tail(1)(0);
   EXPECT_LT(relative_error(x, Ad.partialPivLu().solve(b2)), 4 * cond * backward_bound);
 
-  const int n = 40;  // 1 600 rows: supernodal L L^T
+  const int n = 40;  // 1 600 rows: CHOLMOD's simplicial L D L^T
   const SymmetricMatrix S = SymmetricMatrix::symmetric_part_of(grid_matrix(n, -0.5));
   const Eigen::VectorXd x_true = known_solution(static_cast<int>(S.size()));
   ASSERT_TRUE(kept.factor_and_solve(S, Eigen::MatrixXd(Eigen::VectorXd::Ones(S.size())), X));
   ASSERT_TRUE(kept.solve(S.matrix() * x_true, x));
   EXPECT_LT(relative_error(x, x_true),
             std::sqrt(double(S.size())) * condition_number(n, -0.5) * kBackwardError);
+}
+
+// Where its Cholesky factor is large, a kept factorization solves on a copy of it in single
+// precision (single_precision_factor.hpp): a solution then carries single precision's error,
+// within the Cholesky bound with eps = 2^-24 (Higham, Accuracy and Stability, 10.1) in the form
+// used above, and refined in double precision against the matrix it converges by a factor of
+// about cond x eps a step (mixed-precision iterative refinement, Moler 1967) to double
+// precision's bound. A small factor solves in double precision (the default threshold), and
+// so does one whose entries single precision cannot hold.
+TEST(LinearSolve, LargeKeptFactorSolvesInSinglePrecisionToItsBound) {
+  const int n = 120;  // 14 400 rows: supernodal L L^T
+  const SymmetricMatrix S = SymmetricMatrix::symmetric_part_of(grid_matrix(n, -0.5));
+  const Eigen::VectorXd x_true = known_solution(static_cast<int>(S.size()));
+  const Eigen::VectorXd b = S.matrix() * x_true;
+  const double bound = std::sqrt(double(S.size())) * condition_number(n, -0.5);
+  const double eps_single = std::numeric_limits<float>::epsilon() / 2;
+  KeptFactorization kept;
+  Eigen::MatrixXd X;
+  Eigen::VectorXd x;
+  ASSERT_TRUE(kept.factor_and_solve(S, Eigen::MatrixXd(b), X));
+  EXPECT_FALSE(kept.single_precision());
+  kept.single_precision_from(0);
+  ASSERT_TRUE(kept.factor_and_solve(S, Eigen::MatrixXd(b), X));
+  ASSERT_TRUE(kept.single_precision());
+  EXPECT_LT(relative_error(X.col(0), x_true), bound * kBackwardError);  // the factoring solve
+  ASSERT_TRUE(kept.solve(b, x));
+  const double e_single = relative_error(x, x_true);
+  EXPECT_LT(e_single, bound * eps_single);
+  EXPECT_GT(e_single, bound * kBackwardError);
+  for (int step = 0; step < 4; ++step) {
+    Eigen::VectorXd dx;
+    ASSERT_TRUE(kept.solve(b - S.matrix() * x, dx));
+    x += dx;
+  }
+  EXPECT_LT(relative_error(x, x_true), bound * kBackwardError);
+
+  // Entries about 1e40 (the matrix 1e80 times larger): beyond single precision's range.
+  const SymmetricMatrix S_huge = SymmetricMatrix::symmetric_part_of(1e80 * grid_matrix(n, -0.5));
+  ASSERT_TRUE(kept.factor_and_solve(S_huge, Eigen::MatrixXd(1e80 * b), X));
+  EXPECT_FALSE(kept.single_precision());
+  ASSERT_TRUE(kept.solve(1e80 * b, x));
+  EXPECT_LT(relative_error(x, x_true), bound * kBackwardError);
 }
 
 }  // namespace linear_solve_test

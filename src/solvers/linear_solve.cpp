@@ -15,6 +15,7 @@
 
 #include "core/blas_kernels.hpp"
 #include "solvers/block_ordering.hpp"
+#include "solvers/single_precision_factor.hpp"
 
 namespace finseg {
 namespace {
@@ -127,6 +128,7 @@ class Cholmod : public Eigen::CholmodDecomposition<SpMat, Eigen::Lower> {
     cholmod().print = 0;
   }
   bool is_ll() const { return m_cholmodFactor != nullptr && m_cholmodFactor->is_ll != 0; }
+  const cholmod_factor* factor() const { return m_cholmodFactor; }
   // The analysis of S's pattern (lower triangle) with the ordering `perm` (CHOLMOD's Perm).
   void analyse_with(const SpMat& S, std::vector<int>& perm) {
     if (m_cholmodFactor != nullptr) cholmod_free_factor(&m_cholmodFactor, &cholmod());
@@ -296,7 +298,7 @@ Caches thread_caches() {
 
 // The factorization a solve ended with (for a kept factorization to solve with again).
 struct UsedFactor {
-  const Cholmod* cholmod = nullptr;
+  Cholmod* cholmod = nullptr;
   Umfpack* umfpack = nullptr;
 };
 
@@ -636,6 +638,16 @@ struct KeptFactorization::Impl {
   Eigen::Index rows = 0;
   UsedFactor used;
   bool valid = false;
+  std::size_t single_from = kSinglePrecisionEntries;
+  SinglePrecisionFactor single;  // CHOLMOD's factor in single precision, where it is large
+  // After a factoring solve: the single-precision copy of a large CHOLMOD factor, which then
+  // replaces the factor's values (the next factorization makes them anew).
+  void keep_single() {
+    const cholmod_factor* L = valid && used.cholmod != nullptr ? used.cholmod->factor() : nullptr;
+    if (L == nullptr || L->xsize < single_from) return;
+    single = SinglePrecisionFactor::of(*L);
+    if (single.valid()) used.cholmod->release_numeric();
+  }
 };
 
 KeptFactorization::KeptFactorization() : impl_(std::make_unique<Impl>()) {}
@@ -645,10 +657,12 @@ bool KeptFactorization::factor_and_solve(const SpMat& A, const Eigen::MatrixXd& 
                                          Eigen::MatrixXd& X) {
   Impl& k = *impl_;
   k.used = {};
+  k.single = {};  // before the factorization, which may need its memory
   k.valid = counted([&] {
     return solve_system({k.lu, k.symmetric, false}, A, B, X, nullptr, k.A, k.used);
   });
   k.rows = A.rows();
+  k.keep_single();
   return k.valid;
 }
 
@@ -656,11 +670,13 @@ bool KeptFactorization::factor_and_solve(const SymmetricMatrix& S, const Eigen::
                                          Eigen::MatrixXd& X) {
   Impl& k = *impl_;
   k.used = {};
+  k.single = {};  // before the factorization, which may need its memory
   k.valid = counted([&] {
     return solve_symmetric({k.lu, k.symmetric, false}, S, B, X, nullptr, k.used);
   });
   k.rows = S.size();
   k.A = k.valid && k.used.umfpack != nullptr ? S.matrix() : SpMat();
+  k.keep_single();
   return k.valid;
 }
 
@@ -674,6 +690,7 @@ bool KeptFactorization::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) cons
     }
     // Unrefined: the modified Newton iteration that asks corrects an inexact step anyway
     // (its residual is exact), and the refinement cost 2-4x the triangular solves.
+    if (k.single.valid()) return k.single.solve(b, x);
     if (k.used.cholmod != nullptr) {
       x = k.used.cholmod->solve(b);
       return x.allFinite();
@@ -688,6 +705,15 @@ bool KeptFactorization::valid() const {
 
 void KeptFactorization::clear() {
   impl_->valid = false;
+  impl_->single = SinglePrecisionFactor();
+}
+
+void KeptFactorization::single_precision_from(std::size_t entries) {
+  impl_->single_from = entries;
+}
+
+bool KeptFactorization::single_precision() const {
+  return impl_->single.valid();
 }
 
 }  // namespace finseg

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cstddef>
 #include <memory>
 
 namespace finseg {
@@ -112,11 +113,17 @@ bool sparse_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b, Eigen::Vec
 CholeskyStatus cholesky_solve(const SymmetricMatrix& S, const Eigen::VectorXd& b,
                               Eigen::VectorXd& x, LinearSolveInfo* info = nullptr);
 
+/// Entries of a Cholesky factor from which a kept factorization solves with its copy in single
+/// precision (32 MB of doubles: beyond the caches, where the solves are memory-bound).
+inline constexpr std::size_t kSinglePrecisionEntries = std::size_t{1} << 22;
+
 /// A factorization kept for further right-hand sides: factor once, solve many (the modified
 /// Newton iteration, docs/solvers.md). The factoring solve takes the path sparse_solve takes;
 /// no LU solve is refined, the factoring one included (the iteration that asks corrects an
 /// inexact step), the symmetric path refines as sparse_solve does (its check that the factor
-/// serves). Holds its own symbolic analyses.
+/// serves). Holds its own symbolic analyses. The later solves of a supernodal Cholesky factor
+/// of at least kSinglePrecisionEntries entries run on its copy in single precision
+/// (single_precision_factor.hpp).
 class KeptFactorization {
  public:
   KeptFactorization();
@@ -135,6 +142,11 @@ class KeptFactorization {
   bool valid() const;
   /// Forgets the factor (the analyses stay).
   void clear();
+  /// From how many entries of a Cholesky factor on the later solves use single precision
+  /// (for the next factorization; default kSinglePrecisionEntries).
+  void single_precision_from(std::size_t entries);
+  /// The later solves run in single precision.
+  bool single_precision() const;
 
  private:
   struct Impl;
