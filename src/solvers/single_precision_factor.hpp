@@ -25,8 +25,6 @@ class SinglePrecisionFactor {
   /// false if invalid or x is not finite.
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   bool valid() const { return n_ > 0; }
-  /// Entries of L (the values held, 4 bytes each).
-  std::size_t entries() const { return values_.size(); }
 
  private:
   int n_ = 0;
