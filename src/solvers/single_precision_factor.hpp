@@ -27,6 +27,15 @@ class SinglePrecisionFactor {
   bool valid() const { return n_ > 0; }
 
  private:
+  // Supernode s: columns first .. first + cols - 1, its rows x cols block of L (column-major;
+  // the diagonal block on top) and the row indices of the rows below the diagonal block.
+  struct Supernode {
+    int first, cols, rows;
+    const float* L;
+    const int* below;
+  };
+  Supernode supernode(int s) const;
+
   int n_ = 0;
   std::vector<int> super_, pi_, px_, rows_, perm_;  // CHOLMOD's supernodal layout
   std::vector<float> values_;
