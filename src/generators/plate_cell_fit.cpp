@@ -69,7 +69,7 @@ PlateCellDef plate_cell_correction(int body, double area,
   PlateCellDef cell;
   cell.body = body;
   Mat3 G = Mat3::Zero(), M = Mat3::Zero();
-  std::vector<Eigen::Matrix<double, 3, 2>> Wk;  // sum_k w_k B_k^T Theta_k
+  std::vector<Eigen::Matrix<double, 3, 2>> Wk;  // sum_k s_k w_k B_k^T Theta_k
   for (const CellSideGeometry& side : sides) {
     const Mat23 B = rotation_of_curvature(side.d_M);
     if (side.crease && side.crease_bends) {
@@ -81,9 +81,9 @@ PlateCellDef plate_cell_correction(int body, double area,
       M += side.share * side.weight * b.transpose() * b;
       continue;
     }
-    G += side.weight * B.transpose() * B;
-    M += side.share * side.weight * B.transpose() * B;
-    Wk.push_back(side.weight * B.transpose());
+    G += side.strip_share * side.weight * B.transpose() * B;
+    M += side.strip_share * side.weight * B.transpose() * B;
+    Wk.push_back(side.strip_share * side.weight * B.transpose());
     cell.sides.push_back(side.side);
   }
   Eigen::MatrixXd W(3, 2 * Wk.size());

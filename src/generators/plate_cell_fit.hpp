@@ -14,9 +14,11 @@ struct CellSideGeometry {
   Vec2 d_M = Vec2::Zero();  ///< cell centroid -> neighbour's centroid (or the clamped side's
                             ///< foot point), m
   double weight = 0;        ///< the joint's rotational stiffness about both in-plane axes, N m
-  double share = 0.5;       ///< part of the joint's energy that is this cell's (1 at a clamp)
+  double share = 0.5;  ///< a crease side's part of its energy that is this cell's (1 at a clamp)
   /// Part of the joint's strip (centroid to centroid across the side) inside this cell:
-  /// d_own / (d_own + d_other), 1 at a clamp. The membrane correction's share.
+  /// d_own / (d_own + d_other), 1 at a clamp: a plate side's share of its energy, and its
+  /// weight in the curvature fit with the joint's stiffness (docs/stiffness.md, "Shares in
+  /// the fit"); the membrane correction's share.
   double strip_share = 0.5;
   /// A crease side: its fold is the crease law's, so it is no measurement of the curvature;
   /// only its twist spring (about `across_M`, the side's normal) counts in the joints' energy.
