@@ -81,9 +81,13 @@ PlateCellDef plate_cell_correction(int body, double area,
       M += side.share * side.weight * b.transpose() * b;
       continue;
     }
-    G += side.strip_share * side.weight * B.transpose() * B;
-    M += side.strip_share * side.weight * B.transpose() * B;
-    Wk.push_back(side.strip_share * side.weight * B.transpose());
+    // The fit weighs each side by the cell's share of its joint, as the energy does, so that
+    // a uniform curvature is an equilibrium too (docs/stiffness.md, "Shares in the fit").
+    const Eigen::Matrix<double, 3, 2> sw_Bt = side.strip_share * side.weight * B.transpose();
+    const Mat3 sw_BtB = sw_Bt * B;
+    G += sw_BtB;
+    M += sw_BtB;
+    Wk.push_back(sw_Bt);
     cell.sides.push_back(side.side);
   }
   Eigen::MatrixXd W(3, 2 * Wk.size());
