@@ -59,7 +59,9 @@ TEST(CliGenPatterns, MiuraFoldedFromFlatReachesItsFoldedFormAndDeploysFromTheSta
 
 TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   TempDir dir;
-  auto r = run_finseg(dir, "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --out c.yaml");
+  auto r = run_finseg(dir,
+                      "gen cone --fan-fold --top disc --base disc --pleats 6 --axial-folds 2 "
+                      "--subdivisions 1 --out c.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   // The pattern reads back (faces planar when folded, seams meeting in 3-D): 2 x 6 + 1
   // wedges (two half facets at the seam) in 3 bands, and two end discs of a 13-sided hub (a
@@ -69,7 +71,7 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   EXPECT_NE(r.out.find("bodies 91 (13 fixed)"), std::string::npos) << r.out;
   // Both ends open: the wall alone, one face of the base band clamped.
   r = run_finseg(dir,
-                 "gen cone --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
+                 "gen cone --fan-fold --pleats 6 --axial-folds 2 --subdivisions 1 --top open "
                  "--base open --fold-steps 10 --out o.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   r = run_finseg(dir, "inspect o.yaml");
@@ -119,7 +121,7 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   EXPECT_LT(volume, std::stod(capped.substr(frustum + 25)));
   expect_refused(dir, "gen cone --top open --base open --gathered 0.5 --caps --out l.yaml",
                  "--caps");
-  for (const char* bad : {"--gathered 0.5", "--top open --base open --gathered 1",
+  for (const char* bad : {"--top disc --gathered 0.5", "--top open --base open --gathered 1",
                           "--top open --base open "
                           "--gathered -0.1",
                           "--top open --base open --gathered 0.5 --stowed 150"}) {
@@ -152,16 +154,29 @@ TEST(CliGenPatterns, ConeSceneReadsBackAndBadOptionsAreRefused) {
   }
   // The wrap assignment's scene says so in its header, and its pattern reads back.
   ASSERT_EQ(run_finseg(dir,
-                       "gen cone --top open --base open --wrap --pleats 3 --axial-folds 1 "
+                       "gen cone --fan-fold --wrap --pleats 3 --axial-folds 1 "
                        "--subdivisions 1 --out w.yaml")
                 .code,
             0);
   EXPECT_NE(test::slurp(dir / "w.yaml").find("--wrap: pleats + 1 mountains"), std::string::npos);
   EXPECT_EQ(run_finseg(dir, "inspect w.yaml").code, 0);
-  for (const char* bad : {"--stowed 150", "--top open --base open --stowed 181"}) {
+  for (const char* bad : {"--base disc --stowed 150", "--top open --base open --stowed 181"}) {
     expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--stowed");
   }
   expect_refused(dir, "gen cone --top lid --out l.yaml", "--top");
+  // With no start chosen the wall is gathered by folding; the end discs, the wrap and the
+  // fold fraction belong to the fan fold alone, which takes no other start.
+  ASSERT_EQ(
+      run_finseg(dir, "gen cone --pleats 3 --axial-folds 1 --subdivisions 1 --out d.yaml").code, 0);
+  EXPECT_NE(test::slurp(dir / "d.yaml").find("title: cone gathered by folding"), std::string::npos);
+  for (const auto& [bad, field] : {std::pair{"--top disc", "--top"},
+                                   {"--base disc", "--base"},
+                                   {"--wrap", "--wrap"},
+                                   {"--fold-fraction 0.5", "--fold-fraction"},
+                                   {"--fan-fold --gathered 0.5", "--fan-fold"},
+                                   {"--fan-fold --fold-to-gathered 0.5", "--fan-fold"}}) {
+    expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", field);
+  }
   expect_refused(dir, "gen cone --fold-steps -1 --out l.yaml", "--fold-steps");
   expect_refused(dir, "gen cone --top-radius 0.2 --base-radius 0.1 --out d.yaml", "--top-radius");
   expect_refused(dir, "gen miura --sector-angle 95 --out e.yaml", "--sector-angle");
@@ -259,7 +274,7 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 156 (0 fixed)"), std::string::npos) << r.out;
   expect_refused(dir, "gen cone --cells hexagons --out l.yaml", "--cells");
-  for (const char* bad : {"--reflected 0.5", "--top open --base open --reflected 1",
+  for (const char* bad : {"--top disc --reflected 0.5", "--top open --base open --reflected 1",
                           "--top open --base open --reflected -0.2",
                           "--top open --base open --reflected 0.5 --gathered 0.5"}) {
     expect_refused(dir, std::string("gen cone ") + bad + " --out l.yaml", "--reflected");

@@ -185,7 +185,7 @@ TEST(ConeFoldGathered, CoarseFoldsThatCannotBeMadeAreRefused) {
 TEST(ConeFoldGathered, BadOptionsAreRefused) {
   test::TempDir dir;
   for (const auto& [bad, named] :
-       {std::pair{"--fold-to-gathered 0.5", "--fold-to-gathered"},  // closed ends
+       {std::pair{"--top disc --fold-to-gathered 0.5", "--fold-to-gathered"},  // a closed end
         {"--top open --base open --fold-to-gathered 1", "--fold-to-gathered"},
         {"--top open --base open --fold-to-gathered -0.1", "--fold-to-gathered"},
         {"--top open --base open --fold-to-gathered 0.5 --gathered 0.5", "--fold-to-gathered"},

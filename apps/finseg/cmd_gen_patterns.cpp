@@ -487,12 +487,14 @@ void register_cone(CLI::App* gen) {
   auto s = std::make_shared<ConeSpec>();
   auto angles = std::make_shared<std::pair<double, double>>(120.0, 150.0);
   auto fraction = std::make_shared<double>(0.9);
-  auto ends = std::make_shared<std::pair<std::string, std::string>>("disc", "disc");
+  auto ends = std::make_shared<std::pair<std::string, std::string>>("open", "open");
   auto fold_steps = std::make_shared<int>(0);
   auto stowed = std::make_shared<double>(-1);
   auto gathered = std::make_shared<double>(-1);
   CLI::App* c = gen->add_subcommand(
-      "cone", "conical skin with radial pleats and axial zigzag folds, top pulled along the axis");
+      "cone",
+      "conical skin with radial pleats and axial zigzag folds; by default gathered by folding "
+      "(--fold-to-gathered 0.9), a base facet pulled back out");
   c->add_option("--base-radius", s->base_radius, "m")->capture_default_str();
   c->add_option("--top-radius", s->top_radius, "m")->capture_default_str();
   c->add_option("--height", s->height, "m")->capture_default_str();
@@ -504,12 +506,20 @@ void register_cone(CLI::App* gen) {
       ->capture_default_str();
   c->add_option("--axial-fold-angle", angles->second, "stowed fold of the rings, deg (0, 180)")
       ->capture_default_str();
+  auto fan = std::make_shared<bool>(false);
+  c->add_flag("--fan-fold", *fan,
+              "fold the deployed cone by driving every crease towards its stowed angle (the "
+              "implicit solver unless --fold-steps), the top pulled along the axis; the only "
+              "start with --top/--base disc, --wrap or --fold-fraction (docs/folding.md)");
   CLI::Option* fraction_option =
-      c->add_option("--fold-fraction", *fraction, "share of the stowed angles folded to, (0, 1]")
+      c->add_option("--fold-fraction", *fraction,
+                    "with --fan-fold: share of the stowed angles folded to, (0, 1]")
           ->capture_default_str();
-  c->add_option("--top", ends->first, "top end: disc (hub + pleated band, pulled) or open")
+  c->add_option("--top", ends->first,
+                "top end: open, or (with --fan-fold) disc: hub + pleated band, pulled")
       ->capture_default_str();
-  c->add_option("--base", ends->second, "base end: disc (its hub clamped) or open")
+  c->add_option("--base", ends->second,
+                "base end: open, or (with --fan-fold) disc: its hub clamped")
       ->capture_default_str();
   c->add_option("--fold-steps", *fold_steps,
                 "folding by the static solver in this many load steps (0: implicit, dynamic)")
@@ -534,16 +544,17 @@ void register_cone(CLI::App* gen) {
       "start from the wall gathered along its symmetric rigid motion, share [0, 1) of the way "
       "that brings every other generator onto the axis (open ends only; no facets coincide, "
       "contact on); a base facet pulled back out");
-  auto fold_gather = std::make_shared<double>(-1);
+  auto fold_gather = std::make_shared<double>(0.9);
   CLI::Option* fold_gather_option = c->add_option(
       "--fold-to-gathered", *fold_gather,
       "start from the deployed cone and let `finseg run --fold` gather it by simulation, share "
       "[0, 1) as for --gathered (open ends only; static solver, --fold-steps or 20 load steps); "
-      "deploy from its checkpoint with --state: a base facet pulled back out as for --gathered");
+      "deploy from its checkpoint with --state: a base facet pulled back out as for --gathered. "
+      "The start when no other is chosen, with share 0.9");
   c->add_flag("--wrap", s->wrap,
               "generator 0 a mountain too: pleats + 1 mountains among the generators, the "
-              "assignment a flat stack with thickness needs (docs/folding.md); not with "
-              "--stowed, --gathered, --fold-to-gathered or --reflected");
+              "assignment a flat stack with thickness needs (docs/folding.md); with --fan-fold "
+              "only");
   CLI::Option* reflected_option = c->add_option(
       "--reflected", s->reflect_gather,
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
@@ -555,7 +566,7 @@ void register_cone(CLI::App* gen) {
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
                gathered, gathered_option, inflate, caps, fold_gather, fold_gather_option,
-               reflected_option] {
+               reflected_option, fan] {
     check_sheet(*o);
     if (!(*fraction > 0 && *fraction <= 1)) {
       throw InputError("<cli>", "--fold-fraction", fmt::format("{}; allowed (0, 1]", *fraction));
@@ -568,6 +579,14 @@ void register_cone(CLI::App* gen) {
     s->base_disc = disc_end(ends->second, "--base");
     s->pleat_fold_angle = angles->first * kDegToRad;
     s->axial_fold_angle = angles->second * kDegToRad;
+    if (*fan) {
+      for (const CLI::Option* other :
+           {stowed_option, gathered_option, fold_gather_option, reflected_option}) {
+        if (other->count() > 0) {
+          throw InputError("<cli>", "--fan-fold", "not with " + other->get_name());
+        }
+      }
+    }
     if (reflected_option->count() > 0) {
       for (const CLI::Option* other : {stowed_option, gathered_option, fold_gather_option}) {
         if (other->count() > 0) {
@@ -608,25 +627,33 @@ void register_cone(CLI::App* gen) {
     if (*inflate && !from_gathered) {
       throw InputError("<cli>", "--inflate", "needs --gathered or --reflected");
     }
-    const bool to_gathered = fold_gather_option->count() > 0;
-    if (to_gathered && (s->top_disc || s->base_disc)) {
-      throw InputError("<cli>", "--fold-to-gathered", "needs --top open --base open");
-    }
-    if (to_gathered && (from_gathered || from_stack)) {
+    const bool to_gathered_given = fold_gather_option->count() > 0;
+    if (to_gathered_given && (from_gathered || from_stack)) {
       throw InputError("<cli>", "--fold-to-gathered", "not with --gathered or --stowed");
     }
+    if (to_gathered_given && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", "--fold-to-gathered", "needs --top open --base open");
+    }
+    if (!*fan && (s->top_disc || s->base_disc)) {
+      throw InputError("<cli>", s->top_disc ? "--top" : "--base",
+                       "disc needs --fan-fold (only the fan fold drives a cone with end discs)");
+    }
+    // Folding to the gathered wall is the start when none is chosen: the fan fold of a closed
+    // cone is locked, and the open one's stops short of the stack (docs/folding.md).
+    const bool to_gathered = !*fan && !from_stack && !from_gathered;
     if (to_gathered && !(*fold_gather >= 0 && *fold_gather < 1)) {
       throw InputError("<cli>", "--fold-to-gathered",
                        fmt::format("{}; allowed [0, 1)", *fold_gather));
     }
-    if (to_gathered && fraction_option->count() > 0) {
+    if (!*fan && fraction_option->count() > 0) {
       throw InputError("<cli>", "--fold-fraction",
-                       "not with --fold-to-gathered (its share says how far the wall gathers)");
+                       "needs --fan-fold (--fold-to-gathered's share says how far the wall "
+                       "gathers)");
     }
-    if (s->wrap && (from_stack || from_gathered || to_gathered)) {
+    if (s->wrap && !*fan) {
       throw InputError("<cli>", "--wrap",
-                       "the fan stack and the gathered wall are the fan fold's: not with --stowed, "
-                       "--gathered or --fold-to-gathered");
+                       "needs --fan-fold (the fan stack and the gathered wall are the fan "
+                       "assignment's)");
     }
     CreasePattern p;
     in_scene_file(

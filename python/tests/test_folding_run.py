@@ -43,7 +43,7 @@ def test_fold_and_deploy_as_the_command_line(tmp_path, finseg_cli):
 def test_fold_from_a_state_as_the_command_line(tmp_path, finseg_cli):
     """A fold started from a state (a second fold from the first's end) keeps the state's
     history and velocities, as `finseg run --fold --state FILE` does."""
-    gen = finseg_cli("gen", "cone", "--top", "open", "--base", "open", "--pleats", "3",
+    gen = finseg_cli("gen", "cone", "--fan-fold", "--pleats", "3",
                      "--axial-folds", "1", "--subdivisions", "1", "--fold-fraction", "0.3",
                      "--out", "c.yaml", cwd=tmp_path)  # an implicit (dynamic) fold
     assert gen.returncode == 0, gen.stderr
