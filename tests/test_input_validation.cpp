@@ -269,6 +269,15 @@ TEST(StepLimits, SolverStopsWhenTimeDoesNotAdvance) {
   EXPECT_NE(stats.message.find("does not advance"), std::string::npos) << stats.message;
 }
 
+// A sheet cut into rows is a plate: of the identified rigidities it takes the bending one.
+TEST(SheetRows, BeamOverridesRefusedForAPlate) {
+  const std::string rows = replaced(kSheet, "segments: 4", "segments: 4\n  segments_across: 2");
+  expect_refused(rows + "stiffness: {twist_rigidity: 1e-6}\n", "stiffness.twist_rigidity",
+                 "segments_across: 1");
+  expect_refused(rows + "stiffness: {bending_rigidity: 1e-5, axial_rigidity: 1e3}\n",
+                 "stiffness.axial_rigidity", "segments_across: 1");
+}
+
 // 10^6 x 10^5 segments used to end in a bare std::bad_alloc after 4.6 GB.
 TEST(MemoryEstimate, HugeModelsRefusedBeforeBuilding) {
   expect_refused(replaced(kSheet, "segments: 4", "segments: 1000000\n  segments_across: 100000"),

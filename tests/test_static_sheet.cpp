@@ -28,7 +28,10 @@ TEST(StaticSheet, SelfWeightThroughIndefiniteIteratesToAStableEquilibrium) {
   const SolverStats st = solve(m, s, 1);
   ASSERT_EQ(st.status, "ok") << st.message;
   EXPECT_GT(linear_solve_counters().indefinite, 0);  // the case exercises the shift
-  EXPECT_LE(st.newton_iterations, 40);               // the issue's bound (formerly 26 at 20 x 20)
+  // No bound on the iterations here: since the sheet is a plate (2026-12-03) its Poisson
+  // coupling meets the membrane in this thin sheet (Searle's b^2 kappa / t ~ 80 already at 1 %
+  // of the load) and Newton needs 134 iterations, not 16 (BENCHMARKS.md, "A square sheet at
+  // scale"; the iteration counts are the benchmark's).
   EXPECT_EQ(linear_solve_counters().lu_factorizations, 0);
 
   ForceJacobian jac;

@@ -59,7 +59,10 @@ struct SheetSpec {
 std::vector<double> panel_cell_bounds(const SheetSpec& spec, double a, double b, bool crease_a,
                                       bool crease_b);
 
-/// Builds bodies, elements and initial poses. Throws InputError on impossible specs.
+/// Builds bodies, elements and initial poses. One row across: the strip of beam joints at
+/// the cells' centres (the paper's model); more rows: a plate through the pattern path
+/// (build_sheet_pattern_model), whose stiffness overrides are limited to the bending
+/// rigidity. Throws InputError on impossible specs.
 Model build_sheet_model(const SheetSpec& spec);
 
 /// A square 0.2 m sheet of 80 g/m^2 paper (0.1 mm, 3 GPa, nu 0.3, 800 kg/m^3) cut into
