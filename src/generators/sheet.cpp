@@ -88,10 +88,6 @@ Vec6 joint_stiffness(const SheetSpec& s, double h) {
   return k;
 }
 
-Mat3 rot_y(double a) {
-  return so3_exp<double>(Vec3(0, a, 0));
-}
-
 }  // namespace
 
 std::vector<double> panel_cell_bounds(const SheetSpec& s, double a, double b, bool crease_a,
@@ -108,6 +104,24 @@ std::vector<double> panel_cell_bounds(const SheetSpec& s, double a, double b, bo
   return bounds;
 }
 
+std::vector<double> panel_starts(const SheetSpec& spec) {
+  std::vector<double> starts{0.0};
+  for (const FoldSpec& f : spec.folds) starts.push_back(f.s);
+  starts.push_back(spec.length);
+  return starts;
+}
+
+std::vector<PanelFrame> panel_frames(const SheetSpec& spec) {
+  const std::vector<double> starts = panel_starts(spec);
+  std::vector<PanelFrame> frames{{spec.origin_W, spec.R_W0}};
+  for (std::size_t k = 0; k < spec.folds.size(); ++k) {
+    const PanelFrame& p = frames.back();
+    frames.push_back({p.o_W + p.R_W * Vec3(starts[k + 1] - starts[k], 0, 0),
+                      p.R_W * so3_exp<double>(Vec3(0, spec.folds[k].angle, 0))});
+  }
+  return frames;
+}
+
 Model build_sheet_model(const SheetSpec& spec) {
   validate_spec(spec);
   // Rows across make it a plate: the pattern path's joints and cell corrections converge to
@@ -119,9 +133,7 @@ Model build_sheet_model(const SheetSpec& spec) {
 
   // Panels, their cells and the joints along the sheet.
   const int panels = static_cast<int>(spec.folds.size()) + 1;
-  std::vector<double> panel_start{0.0};
-  for (const FoldSpec& f : spec.folds) panel_start.push_back(f.s);
-  panel_start.push_back(spec.length);
+  const std::vector<double> panel_start = panel_starts(spec);
   std::vector<Joint> joints;
   for (int p = 0; p < panels; ++p) {
     const auto b =
@@ -144,15 +156,7 @@ Model build_sheet_model(const SheetSpec& spec) {
   const int n_along = static_cast<int>(bs.size()) - 1;
   const double w = spec.width;
 
-  // Panel frames: cumulative rotation about y, panel origins chained along x.
-  std::vector<Mat3> R_panel(panels);
-  std::vector<Vec3> o_panel(panels);
-  R_panel[0] = spec.R_W0;
-  o_panel[0] = spec.origin_W;
-  for (int p = 1; p < panels; ++p) {
-    R_panel[p] = R_panel[p - 1] * rot_y(spec.folds[p - 1].angle);
-    o_panel[p] = o_panel[p - 1] + R_panel[p - 1] * Vec3(panel_start[p] - panel_start[p - 1], 0, 0);
-  }
+  const std::vector<PanelFrame> frame = panel_frames(spec);
   auto panel_of = [&](double s_mid) {
     int p = 0;
     while (p + 1 < panels && s_mid > panel_start[p + 1]) ++p;
@@ -169,8 +173,9 @@ Model build_sheet_model(const SheetSpec& spec) {
     const double len = bs[i + 1] - bs[i];
     set_prism(b, rectangle_outline(len, w), spec.thickness,
               spec.density * (len * w * spec.thickness));
-    b.R0_WB = R_panel[b.panel];
-    b.p0_W = o_panel[b.panel] + R_panel[b.panel] * Vec3(c_M.x() - panel_start[b.panel], c_M.y(), 0);
+    const PanelFrame& f = frame[b.panel];
+    b.R0_WB = f.R_W;
+    b.p0_W = f.o_W + f.R_W * Vec3(c_M.x() - panel_start[b.panel], c_M.y(), 0);
     b.fixed = (spec.clamp_start && i == 0) ||
               std::find(spec.fixed_panels.begin(), spec.fixed_panels.end(), b.panel) !=
                   spec.fixed_panels.end();

@@ -39,7 +39,7 @@ struct SheetSpec {
   double length = 0.2, width = 0.04, thickness = 1e-4;
   double youngs_modulus = 3e9, poisson_ratio = 0.3, density = 800;
   int cells_along = 16;  ///< per panel when there are folds, else for the whole length
-  int cells_across = 1;
+  int cells_across = 1;  ///< rows across; > 1 makes the sheet a plate (build_sheet_model)
   /// Optional relative cell lengths along s (one per cell, any positive scale); empty:
   /// uniform, or graded towards the creases by `crease_refinement`.
   std::vector<double> cell_weights;
@@ -58,6 +58,18 @@ struct SheetSpec {
 /// `crease_refinement`. The bending joints sit at the cells' centres.
 std::vector<double> panel_cell_bounds(const SheetSpec& spec, double a, double b, bool crease_a,
                                       bool crease_b);
+
+/// Where each panel (the sheet between folds) starts along s, m: 0, the folds' s, and the
+/// length last (panels + 1 entries).
+std::vector<double> panel_starts(const SheetSpec& spec);
+
+/// A panel's initial frame: the world position of its start (s at panel_starts, y = 0) and
+/// its orientation (x along s, y across), the folds' rotations about y chained from R_W0.
+struct PanelFrame {
+  Vec3 o_W = Vec3::Zero();
+  Mat3 R_W = Mat3::Identity();
+};
+std::vector<PanelFrame> panel_frames(const SheetSpec& spec);
 
 /// Builds bodies, elements and initial poses. One row across: the strip of beam joints at
 /// the cells' centres (the paper's model); more rows: a plate through the pattern path

@@ -1,7 +1,5 @@
 #include "patterns/sheet_pattern.hpp"
 
-#include "core/so3.hpp"
-
 namespace finseg {
 namespace {
 
@@ -42,16 +40,8 @@ std::vector<CutLine> cut_lines(const SheetSpec& spec, const std::vector<double>&
 SheetPattern sheet_crease_pattern(const SheetSpec& spec, bool cells) {
   const int rows = cells ? spec.cells_across : 1;
   const double w = spec.width;
-  std::vector<double> panel_start{0.0};
-  for (const FoldSpec& f : spec.folds) panel_start.push_back(f.s);
-  panel_start.push_back(spec.length);
-  // Fold line k's folded position and the orientation of panel k.
-  std::vector<Vec3> crease_W{spec.origin_W};
-  std::vector<Mat3> R_W{spec.R_W0};
-  for (std::size_t k = 0; k < spec.folds.size(); ++k) {
-    crease_W.push_back(crease_W[k] + R_W[k] * Vec3(panel_start[k + 1] - panel_start[k], 0, 0));
-    R_W.push_back(R_W[k] * so3_exp<double>(Vec3(0, spec.folds[k].angle, 0)));
-  }
+  const std::vector<double> panel_start = panel_starts(spec);
+  const std::vector<PanelFrame> frame = panel_frames(spec);
   const std::vector<CutLine> lines = cut_lines(spec, panel_start, cells);
   const int m = static_cast<int>(lines.size());
   auto vertex = [&](int j, int r) { return j * (rows + 1) + r; };
@@ -60,11 +50,12 @@ SheetPattern sheet_crease_pattern(const SheetSpec& spec, bool cells) {
   p.has_fold_angles = true;
   for (int j = 0; j < m; ++j) {
     const CutLine& l = lines[j];
-    const Vec3 base_W = crease_W[l.panel] + R_W[l.panel] * Vec3(l.x - panel_start[l.panel], 0, 0);
+    const PanelFrame& f = frame[l.panel];
+    const Vec3 base_W = f.o_W + f.R_W * Vec3(l.x - panel_start[l.panel], 0, 0);
     for (int r = 0; r <= rows; ++r) {
       const double y = w * r / rows;
       p.vertices_flat_m.emplace_back(l.x, y);
-      p.vertices_folded_m.push_back(base_W + R_W[l.panel] * Vec3(0, y, 0));
+      p.vertices_folded_m.push_back(base_W + f.R_W * Vec3(0, y, 0));
     }
     if (j + 1 == m) break;
     for (int r = 0; r < rows; ++r) {
