@@ -7,7 +7,9 @@
 #include "core/error.hpp"
 
 namespace finseg {
+namespace {
 
+// The pattern-path material, laws, clamps and fixed panels of `spec` for its pattern `sp`.
 PatternSheetSpec sheet_pattern_spec(const SheetSpec& spec, const SheetPattern& sp) {
   const StiffnessOverride& o = spec.overrides;
   const char* refused = o.twist_rigidity     ? "twist_rigidity"
@@ -45,6 +47,8 @@ PatternSheetSpec sheet_pattern_spec(const SheetSpec& spec, const SheetPattern& s
   }
   return s;
 }
+
+}  // namespace
 
 Model build_sheet_pattern_model(const SheetSpec& spec, bool crease_bending_in_series) {
   const SheetPattern sp = sheet_crease_pattern(spec, true);

@@ -10,15 +10,12 @@
 
 namespace finseg {
 
-/// The pattern-path material, crease laws (each fold's on its crease sides, for the whole
-/// width), clamps and fixed panels of `spec` for its pattern `sp` = sheet_crease_pattern(spec,
-/// true), one face a cell. Throws InputError for stiffness overrides other than the bending
-/// rigidity EI (a plate rigidity D = EI / (width (1 - nu^2)), free long sides).
-PatternSheetSpec sheet_pattern_spec(const SheetSpec& spec, const SheetPattern& sp);
-
-/// `spec` built through the pattern path; bodies' `panel` the sheet's panels (between folds),
-/// `Model::sheet` the sheet's own extent (the clamp column lies before x = 0).
-/// `crease_bending_in_series`: PatternSheetSpec's.
+/// `spec` built through the pattern path: its pattern sheet_crease_pattern(spec, true), one
+/// face a cell, each fold's law on its crease sides (for the whole width), the clamp column
+/// and the fixed panels' faces fixed; bodies' `panel` the sheet's panels (between folds),
+/// `Model::sheet` the sheet's own extent (the clamp column lies before x = 0). Throws
+/// InputError for stiffness overrides other than the bending rigidity EI (a plate rigidity D =
+/// EI / (width (1 - nu^2)), free long sides). `crease_bending_in_series`: PatternSheetSpec's.
 Model build_sheet_pattern_model(const SheetSpec& spec, bool crease_bending_in_series = true);
 
 }  // namespace finseg
