@@ -19,7 +19,7 @@
 namespace finseg {
 namespace plate_cell_jacobian_test {
 
-Model miura_sheet(bool with_plate_cells) {
+Model miura_sheet(bool with_plate_cells, bool triangles = false) {
   MiuraSpec ms;
   ms.rows = 2;
   ms.columns = 2;
@@ -30,6 +30,7 @@ Model miura_sheet(bool with_plate_cells) {
   spec.poisson_ratio = 0.3;
   spec.density = 1000;
   spec.subdivisions = 3;
+  spec.triangle_cells = triangles;  // the consistent cell Hessian (docs/stiffness.md)
   spec.mountain_law = std::make_shared<LinearCreaseLaw>(1e-3, 0.0);
   spec.valley_law = spec.mountain_law;
   Model m = build_pattern_model(miura_crease_pattern(ms), spec);
@@ -83,6 +84,40 @@ TEST(PlateCells, CouplesAreTheEnergysGradient) {
   const double work = power(m) - power(bare);
   ASSERT_GT(std::abs(work), 0);
   EXPECT_NEAR(dE, -work, 1e-7 * std::abs(work));
+}
+
+// State::plate_correction_scale (the static solver's corrections-last stage, docs/solvers.md)
+// multiplies the corrections' energy, couples and Jacobian, and leaves the consistent cell
+// Hessian of triangles, which holds the whole bending, alone.
+TEST(PlateCells, TheCorrectionScaleScalesCorrectionsOnly) {
+  const auto energy_and_forces = [](const Model& m, const State& s) {
+    BodyForces f;
+    compute_forces(m, s, f);
+    Eigen::VectorXd g = generalized_forces(m, f);
+    g.conservativeResize(g.size() + 1);
+    g[g.size() - 1] = f.potential_energy;
+    return g;
+  };
+  const Model m = miura_sheet(true), bare = miura_sheet(false);
+  ASSERT_TRUE(m.plate_cells.front().correction);
+  const State s = bent(m);
+  State part = s;
+  part.plate_correction_scale = 0.4;
+  const Eigen::VectorXd full = energy_and_forces(m, s) - energy_and_forces(bare, s);
+  const Eigen::VectorXd scaled = energy_and_forces(m, part) - energy_and_forces(bare, part);
+  ASSERT_GT(full.norm(), 0);
+  EXPECT_LT((scaled - 0.4 * full).norm(), 1e-9 * full.norm());
+  const Eigen::MatrixXd J = test::pose_jacobian(m, s) - test::pose_jacobian(bare, s);
+  const Eigen::MatrixXd Jp = test::pose_jacobian(m, part) - test::pose_jacobian(bare, part);
+  EXPECT_LT((Jp - 0.4 * J).cwiseAbs().maxCoeff(), 1e-9 * J.cwiseAbs().maxCoeff());
+
+  const Model tri = miura_sheet(true, true);
+  ASSERT_FALSE(tri.plate_cells.empty());
+  ASSERT_FALSE(tri.plate_cells.front().correction);
+  const State st = bent(tri);
+  State off = st;
+  off.plate_correction_scale = 0;
+  EXPECT_EQ(energy_and_forces(tri, st), energy_and_forces(tri, off));
 }
 
 }  // namespace plate_cell_jacobian_test

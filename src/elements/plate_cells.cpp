@@ -70,6 +70,7 @@ using Rows3 = Eigen::Matrix<double, 3, Eigen::Dynamic>;
 // A cell's dense work, kept between the cells of one evaluation (no allocation per cell where
 // they have the same number of sides; three fixed rows: small products unrolled).
 struct PlateWork {
+  double scale = 1;  // State::plate_correction_scale
   Eigen::VectorXd theta, m;
   Eigen::MatrixXd T, QT, J;
   std::vector<Rows3> dtheta;
@@ -94,7 +95,7 @@ void cell_jacobian(const PlateCellDef& cell, const std::vector<PlateSideNow>& no
     w.dtheta[k].middleCols<3>(3 * cb.local(s.outer)) -= U;
     w.T.middleRows<2>(2 * k).noalias() = s.A * w.dtheta[k];
   }
-  w.QT.noalias() = cell.Q * w.T;
+  w.QT.noalias() = w.scale * cell.Q * w.T;
   w.J.setZero(nr, nr);
   for (int k = 0; k < n; ++k) {
     const PlateSideNow& s = now[k];
@@ -119,6 +120,7 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
   thread_local ElementRotations rotations;  // its storage serves every evaluation
   rotations.reset(model.elements.size());
   for (const PlateCellDef& cell : model.plate_cells) {
+    work.scale = cell.correction ? state.plate_correction_scale : 1.0;
     const int n = static_cast<int>(cell.sides.size());
     now.clear();
     Eigen::VectorXd& theta = work.theta;
@@ -128,7 +130,7 @@ void add_plate_cells(const Model& model, const State& state, Assembler& as) {
       theta.segment<2>(2 * k) = now[k].A * now[k].rot->theta_F;
     }
     Eigen::VectorXd& m = work.m;
-    m.noalias() = cell.Q * theta;
+    m.noalias() = work.scale * cell.Q * theta;
     as.add_energy(0.5 * theta.dot(m));
     // dE = sum_k m_k . A_k Jl_k^-1 R_WF^T (dphi_inner - dphi_outer): the inner body takes
     // -R_WF Jl^-T A^T m_k, the outer the opposite.

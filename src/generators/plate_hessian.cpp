@@ -299,6 +299,7 @@ std::vector<PlateCellDef> plate_hessian_cells(const SegmentMesh& mesh, const Mod
     const Mat Lt = L * to_J, Rt = fT.R * to_J;
     PlateCellDef cell;
     cell.body = static_cast<int>(t);
+    cell.correction = false;
     // Each element's rotation read in its outer cell's frame, turned into t's.
     for (int e : order) {
       Mat3 R_TO = Mat3::Identity();

@@ -26,6 +26,9 @@ struct PlateCellDef {
   int body = -1;
   std::vector<PlateCellSide> sides;
   Eigen::MatrixXd Q;  ///< N m/rad, 2 sides x 2 sides
+  /// True: a correction to the joints' bending (State::plate_correction_scale applies);
+  /// false: the consistent cell Hessian, which holds the whole bending itself.
+  bool correction = true;
 };
 
 /// Membrane correction of a cell (docs/stiffness.md, "Cell membrane correction"):

@@ -51,13 +51,16 @@ struct ChamberGas {
 };
 
 struct State {
-  double t = 0;                         ///< s (static solver: load or drive parameter)
-  std::vector<Vec3> p_W;                ///< centroid positions, m
-  std::vector<Mat3> R_WB;               ///< orientations
-  std::vector<Vec3> v_W;                ///< centroid velocities, m/s
-  std::vector<Vec3> w_W;                ///< angular velocities in world frame, rad/s
-  std::vector<double> drive_s;          ///< displacement of each drive, m
-  double load_scale = 1.0;              ///< multiplies loads and gravity (static load stepping)
+  double t = 0;                 ///< s (static solver: load or drive parameter)
+  std::vector<Vec3> p_W;        ///< centroid positions, m
+  std::vector<Mat3> R_WB;       ///< orientations
+  std::vector<Vec3> v_W;        ///< centroid velocities, m/s
+  std::vector<Vec3> w_W;        ///< angular velocities in world frame, rad/s
+  std::vector<double> drive_s;  ///< displacement of each drive, m
+  double load_scale = 1.0;      ///< multiplies loads and gravity (static load stepping)
+  /// Multiplies the plate cells' curvature corrections: the static solver's way into the
+  /// Poisson coupling of thin plates (docs/solvers.md, "Plates: the corrections last"); 1 else.
+  double plate_correction_scale = 1.0;
   std::vector<ElementHistory> history;  ///< one per force element
   ContactState contact;                 ///< contact points' history (friction anchors)
   SolverMemory solver;                  ///< integrator memory (checkpoints, resume)
