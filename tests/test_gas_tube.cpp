@@ -117,9 +117,9 @@ double facet_width(int n) {
   return 2 * kR * std::sin(kPi / n);
 }
 
-// The facets' hoop strain p rho / (E t) of membrane theory with nu = 0 (the hoop force over
-// the wall's stretching stiffness).
-double hoop_strain_nu0(int n) {
+// sigma_h / E = p rho / (E t): the hoop stress over Young's modulus, which is the facets' hoop
+// strain of membrane theory with nu = 0.
+double hoop_stress_over_E(int n) {
   return kP * apothem(n) / (kE * kT);
 }
 
@@ -130,7 +130,7 @@ double polygon_growth(int n, double eps_h, double nu) {
   return apothem(n) * eps_h + kP * a * a / (4 * kappa_G(nu) * kT);
 }
 double polygon_growth(int n) {
-  return polygon_growth(n, hoop_strain_nu0(n), 0);
+  return polygon_growth(n, hoop_stress_over_E(n), 0);
 }
 
 // Radial growth of the middle row's facet centres, each, m.
@@ -210,7 +210,7 @@ TEST(GasTube, CappedTubeCarriesItsEndLoadAxially) {
   const SolvedTube t = solved_tube(n, true);
   const double area = n * facet_width(n) * apothem(n) / 2;
   EXPECT_NEAR(t.model.chambers[0].initial_volume / (area * kLength), 1, 1e-12);
-  const double strain = axial_strain(t, n), expected = hoop_strain_nu0(n) / 2;
+  const double strain = axial_strain(t, n), expected = hoop_stress_over_E(n) / 2;
   EXPECT_NEAR(strain / expected, 1, 1e-4);
   const double delta = mean(middle_row_growth(t, n));
   EXPECT_NEAR(delta / polygon_growth(n), 1, 5e-4);
@@ -240,7 +240,7 @@ struct PoissonTube {
 };
 
 PoissonTube poisson_tube(int n, double nu) {
-  const double eps = hoop_strain_nu0(n);  // sigma_h / E
+  const double eps = hoop_stress_over_E(n);
   PoissonTube r;
   const SolvedTube capped = solved_tube(n, true, nu);
   r.axial_error = axial_strain(capped, n) / ((0.5 - nu) * eps) - 1;
