@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include "cli_test_util.hpp"
@@ -202,20 +203,26 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
       }
     }
   }
-  // The shipped examples: apart, with the generator's contact stiffness for its pull, the ends
-  // drawn apart by a drive on each end band's whole facet (2 (2 pleats - 1)): F = one gauge's
-  // largest pull (stiffness x travel); inflated, by strings (free across the axis, slack when
-  // pushed, a toe of 3 % of F) round the chamber of the wall. lab_inflate.yaml is the issue's
-  // cone (12 pleats, 6 axial folds).
-  const std::pair<const char*, std::size_t> examples[] = {
-      {"reflected.yaml", 22}, {"reflected_inflate.yaml", 22}, {"lab_inflate.yaml", 46}};
-  for (const auto& [file, drives] : examples) {
+  // The shipped examples: apart, with the generator's contact stiffness for its pull, a drive
+  // on each end band's whole facet (2 (2 pleats - 1)): F = one gauge's largest pull (stiffness
+  // x travel, the first drive a top one); pulled, the apex drawn up and the base pinned;
+  // inflated, both ends drawn apart by strings (free across the axis, slack when pushed, a toe
+  // of 3 % of F) round the chamber of the wall. lab_pull.yaml and lab_inflate.yaml are the
+  // issue's cone (12 pleats, 6 axial folds).
+  const std::tuple<const char*, std::size_t, bool> examples[] = {
+      {"reflected.yaml", 22, false},
+      {"lab_pull.yaml", 46, false},
+      {"reflected_inflate.yaml", 22, true},
+      {"lab_inflate.yaml", 46, true}};
+  for (const auto& [file, drives, inflated] : examples) {
     SCOPED_TRACE(file);
     const Scene scene = read_scene(std::string(FINSEG_SOURCE_DIR) + "/examples/cone/" + file);
     ASSERT_EQ(scene.model.drives.size(), drives);
     const DriveDef& gauge = scene.model.drives[0];
     expect_example_start(scene.model, gauge.stiffness * gauge.travel);
-    const bool inflated = std::string(file) != "reflected.yaml";
+    for (std::size_t k = 1; k < drives; k += 2) {  // top, base, top, base, ...
+      EXPECT_EQ(scene.model.drives[k].travel, inflated ? gauge.travel : 0.0);
+    }
     EXPECT_EQ(scene.model.chambers.size(), inflated ? 1u : 0u);
     for (const DriveDef& d : scene.model.drives) {
       EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);

@@ -403,13 +403,15 @@ double mean_height(const std::vector<Vec3>& x, const CreasePattern& p,
 }
 
 // The cone stowed by reflection (`--reflected F`, cone_reflected): the pattern's folded
-// coordinates are the stowed wall, radially gathered and axially reflected at once. Its ends
-// are pulled apart along the axis, nothing clamped: every whole facet of the top band up and
-// of the base band down, each end by half of what the two bands' mean heights lack of their
-// distance on the deployed cone, stiff gauges sharing 10 kN/m an end (one probe an end sums
-// them). Inflated, the gauges are strings (free across the axis) and the wall, closed by caps
-// (fixed plates could not follow its ends), is filled while they draw its ends apart: the
-// deployment air first, twice as much again as the pull ends, and held 0.3 s.
+// coordinates are the stowed wall, radially gathered and axially reflected at once. Its apex
+// is pulled along the axis, the base held: every whole facet of the top band drawn up by what
+// the two bands' mean heights lack of their distance on the deployed cone, every whole facet
+// of the base band held at its centre by a gauge that does not travel (a pin: the facet may
+// turn about it, which a clamp would forbid), stiff gauges sharing 10 kN/m an end (one probe
+// sums the top's). Inflated, the gauges are strings (free across the axis) drawing each end
+// half that rise, and the wall, closed by caps (fixed plates could not follow its ends), is
+// filled while they draw its ends apart: the deployment air first, twice as much again as
+// the pull ends, and held 0.3 s.
 void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p,
                           bool inflate) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
@@ -422,20 +424,40 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
   auto apart = [&](const std::vector<Vec3>& x) {
     return mean_height(x, p, top) - mean_height(x, p, base);
   };
-  const double travel = 0.5 * (apart(deployed) - apart(p.vertices_folded_m));
+  const double rise = apart(deployed) - apart(p.vertices_folded_m);
+  const double top_travel = inflate ? 0.5 * rise : rise, base_travel = rise - top_travel;
   const double gauge = 1e4 / static_cast<double>(top.size());
   // The contact (contact_section): from the largest pull of one gauge, its facet held.
-  const double most_force = std::max(gauge * travel, 0.1);
+  const double most_force = std::max(gauge * top_travel, 0.1);
   std::string drives = "drives:\n", top_names, base_names;
   for (std::size_t k = 0; k < top.size(); ++k) {
     const std::string t = fmt::format("top{}", k + 1), b = fmt::format("base{}", k + 1);
-    drives += pull_drive(t, face_centroid(p, top[k]), "[0, 0, 1]", gauge, travel, inflate) +
-              pull_drive(b, face_centroid(p, base[k]), "[0, 0, -1]", gauge, travel, inflate);
+    drives += pull_drive(t, face_centroid(p, top[k]), "[0, 0, 1]", gauge, top_travel, inflate) +
+              pull_drive(b, face_centroid(p, base[k]), "[0, 0, -1]", gauge, base_travel, inflate);
     top_names += (k == 0 ? "" : ", ") + t;
     base_names += (k == 0 ? "" : ", ") + b;
   }
   const std::string scene_name = fs::path(o.out).filename().string();
   const std::string fold_file = fs::path(o.out).replace_extension(".fold").filename();
+  // Pinned, the base band's drives stay put: their probe would have no pull to plot against.
+  std::string probes = fmt::format("  - {{name: top, type: drive, drives: [{}]}}\n", top_names);
+  if (inflate) probes += fmt::format("  - {{name: base, type: drive, drives: [{}]}}\n", base_names);
+  const std::string how =
+      inflate ? fmt::format(
+                    "# Its ends are drawn apart along the axis, nothing clamped, by strings (free "
+                    "across the\n# axis, slack when pushed) on the top band's whole facets up "
+                    "and the base band's down,\n# {:.4g} m each (probes top and base sum each "
+                    "end's), while gas fills the wall closed by caps\n# of its end rings: the "
+                    "deployment air, then twice as much again from 0.9 s, held to 1.3 s\n# "
+                    "(docs/gas.md, \"The cone stowed by reflection, inflated\").\n",
+                    top_travel)
+              : fmt::format(
+                    "# Its apex is pulled along the axis, the base held: the top band's whole "
+                    "facets drawn up\n# {:.4g} m (probe top sums their gauges), the base band's "
+                    "pinned at their centres by gauges\n# that do not travel (free to turn: "
+                    "clamped, the base locks the pull); the base band stays\n# gathered "
+                    "(docs/folding.md, \"The apex pulled, the base held\").\n",
+                    top_travel);
   const std::string yaml = fmt::format(
       "# finseg gen cone: base radius {:g} m, top radius {:g} m, height {:g} m, {} pleats, {} "
       "axial folds,\n"
@@ -445,32 +467,20 @@ void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePatter
       "folded at once,\n"
       "# every facet rigid, no layers touching; docs/folding.md, \"The cone stowed by "
       "reflection\").\n"
-      "# No rigid motion leads out of it: the pull strains the facets. Its ends are pulled "
-      "apart\n"
-      "# along the axis, nothing clamped: the top band's whole facets up, the base band's down,\n"
-      "# {:.4g} m each (probes top and base sum each end's gauges){}"
-      " Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
+      "# No rigid motion leads out of it: the pull strains the facets.\n{}"
+      "# Triangle cells (--cells triangles) bend where quadrilaterals lock.\n"
       "#   finseg run {} --out deploy\n"
       "title: cone stowed by reflection, {}\n{}"
       "# material.damping_time 1 ms: the implicit solver passes the bands' snaps\n"
       "{}{}{}{}",
-      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, travel,
-      inflate ? ", by strings\n"
-                "# (free across the axis, slack when pushed) while gas fills the wall closed by "
-                "caps of its\n# end rings: the deployment air, then twice as much again from "
-                "0.9 s, held to 1.3 s\n"
-                "# (docs/gas.md, \"The cone stowed by reflection, inflated\").\n#"
-              : "; the base band stays gathered\n# (docs/folding.md).",
+      s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, s.reflect_gather, how,
       scene_name,
-      inflate ? "inflated while its ends are drawn apart" : "its ends pulled apart along the axis",
+      inflate ? "inflated while its ends are drawn apart" : "its apex pulled along the axis",
       sheet_sections(o, fold_file, 1e-3),
       contact_section(most_force, "a gauge's largest pull", o.thickness,
                       " initial_overlap: ignore,"),
       drives, inflate ? chamber_section(s, p, true, {{0.0, 1.0}, {0.9, 2.0}}) : "",
-      pull_run_sections(fmt::format("  - {{name: top, type: drive, drives: [{}]}}\n"
-                                    "  - {{name: base, type: drive, drives: [{}]}}\n",
-                                    top_names, base_names),
-                        inflate ? 1.3 : 1.0));
+      pull_run_sections(probes, inflate ? 1.3 : 1.0));
   write_pair(o, p, yaml);
 }
 
@@ -560,8 +570,8 @@ void register_cone(CLI::App* gen) {
       "start stowed by reflection: the wall gathered this share [0, 1) of the way (as for "
       "--gathered), each band below a ring reflected across the ring's plane, rings zigzagged "
       "to make that exact (open ends only; radially and axially folded, no layers touching); "
-      "its ends pulled apart along the axis (with --inflate: by strings while gas fills it); "
-      "with --cells triangles the facets bend where "
+      "its apex pulled along the axis, the base band pinned (with --inflate: both ends drawn "
+      "apart by strings while gas fills it); with --cells triangles the facets bend where "
       "quadrilateral segments lock (docs/fold.md, Triangle cells)");
   add_sheet_options(c, *o);
   c->callback([o, s, angles, fraction, fraction_option, ends, fold_steps, stowed, stowed_option,
