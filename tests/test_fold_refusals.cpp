@@ -249,6 +249,18 @@ TEST_F(FoldRefusal, FoldedFrameOnAnotherMesh) {
   refused("vertices_coords", "folded frame has 5 vertices, the crease pattern 6");
 }
 
+TEST_F(FoldRefusal, FurtherFoldedFramesNeedTheirVerticesAndDistinctTitles) {
+  const json coords = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}, {0, 1, 0}};
+  const json frame = {{"frame_classes", {"foldedForm"}}, {"vertices_coords", coords}};
+  json titled = frame;
+  titled["frame_title"] = "deployed";
+  f["file_frames"] = {frame, titled, titled};
+  refused("file_frames[2].frame_title", "'deployed' is the title of an earlier folded frame");
+  f["file_frames"][2].erase("frame_title");  // untitled: named by its place
+  f["file_frames"][2]["vertices_coords"].erase(5);
+  refused("vertices_coords", "folded frame 'file_frames[2]' has 5 vertices, the crease pattern 6");
+}
+
 TEST_F(FoldRefusal, EdgeDataWithoutEdges) {
   f.erase("edges_vertices");
   refused("edges_assignment", "given without edges_vertices");

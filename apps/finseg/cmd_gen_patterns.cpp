@@ -286,12 +286,20 @@ std::string pull_drive(const std::string& name, const Vec2& at, const std::strin
       name, at.x(), at.y(), direction, gauge, string_keys, travel, travel / 100, travel);
 }
 
-// The cone scenes' pull after its drives: `probes` (YAML list items), the energy and contact
-// probes, the implicit solver to `t_end` s, the outputs.
-std::string pull_run_sections(const std::string& probes, double t_end = 1.0) {
+// The cone scenes' probes after `probes` (YAML list items): the energy, the contact, and how
+// far the wall is from the deployed cone (a shape probe on the pattern's "deployed" frame).
+std::string cone_probes(const std::string& probes) {
   return "probes:\n" + probes +
          "  - {name: energy, type: energy}\n"
          "  - {name: contact, type: contact}\n"
+         "  - {name: shape, type: shape, shape: deployed}   # RMS distance from the deployed "
+         "cone\n";
+}
+
+// The cone scenes' pull after its drives: `probes` (YAML list items), cone_probes, the
+// implicit solver to `t_end` s, the outputs.
+std::string pull_run_sections(const std::string& probes, double t_end = 1.0) {
+  return cone_probes(probes) +
          "# newton_tolerance 0.1 (default 1e-3): on this dissipative pull 20-40 % less CPU,\n"
          "# the force moved less than by halving rtol (docs/solvers.md, \"Newton's tolerance,\n"
          "# measured\")\n" +
@@ -373,9 +381,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
       "fixtures: {{panels: [{}]}}   # {}\n"
       "{}"
       "{}"
-      "probes:\n"
-      "  - {{name: energy, type: energy}}\n"
-      "  - {{name: contact, type: contact}}\n"
+      "{}"
       "solver: {{type: implicit, t_end: 0.1, output_interval: 0.001, dt_max: 0.001}}\n"
       "outputs: {{vtk: true, html: true, plot: true}}\n",
       s.base_radius, s.top_radius, s.height, s.pleats, s.axial_folds, start,
@@ -390,7 +396,7 @@ void write_inflated_cone(const SheetOptions& o, const ConeSpec& s, const CreaseP
                        : "",
       scene_name, title, sheet_sections(o, fold_file, damping_time), clamped + 1, clamped_is,
       contact_section(contact_force, "the pull's", o.thickness, " initial_overlap: ignore,"),
-      chamber_section(s, p, caps, {{0.0, 1.0}}));
+      chamber_section(s, p, caps, {{0.0, 1.0}}), cone_probes(""));
   write_pair(o, p, gas_yaml);
 }
 
@@ -415,6 +421,7 @@ double mean_height(const std::vector<Vec3>& x, const CreasePattern& p,
 void write_reflected_cone(const SheetOptions& o, const ConeSpec& s, CreasePattern& p,
                           bool inflate) {
   const std::vector<Vec3> deployed = p.vertices_folded_m;
+  p.shapes.push_back({"deployed", deployed});  // the shape probe's target
   p.vertices_folded_m = cone_reflected(s, p);
   std::vector<int> top, base;  // the bands' whole facets (wedges 0 and 2 pleats: the seam's halves)
   for (int w = 1; w < 2 * s.pleats; ++w) {
@@ -668,8 +675,9 @@ void register_cone(CLI::App* gen) {
     CreasePattern p;
     in_scene_file(
         "<cli>", [&] { p = cone_crease_pattern(*s); }, kCliNames);
-    if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
     const std::vector<Vec3> deployed = p.vertices_folded_m;
+    p.shapes.push_back({"deployed", deployed});  // the shape probe's target
+    if (from_stack) p.vertices_folded_m = cone_fan_stack(*s, p, *stowed * kDegToRad);
     if (from_gathered) gather_pattern(*s, p, *gathered);
     const std::vector<Vec3> gathered_x =
         to_gathered ? target_gathered(*s, p, *fold_gather) : std::vector<Vec3>{};

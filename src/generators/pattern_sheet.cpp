@@ -282,6 +282,35 @@ bool uses_hessian_bending(const PatternSheetSpec& s, const SegmentMesh& mesh) {
                      [](const std::vector<int>& c) { return c.size() == 3; });
 }
 
+// Where the pattern's further folded forms put each body's centroid (ShapeDef): the faces
+// cut as for the model's bodies, each cell placed on the shape's vertices by the same fit as
+// its start pose.
+std::vector<ShapeDef> pattern_shapes(const CreasePattern& p, const PatternSheetSpec& spec,
+                                     const Model& m) {
+  std::vector<ShapeDef> out;
+  for (const PatternShape& shape : p.shapes) {
+    CreasePattern placed = p;
+    placed.vertices_folded_m = shape.vertices_m;
+    placed.shapes.clear();
+    const SegmentMesh cut = subdivide_pattern(placed, subdivision_of(spec));
+    ShapeDef d{shape.title, {}};
+    for (std::size_t c = 0; c < cut.cells.size(); ++c) {
+      std::vector<Vec2> flat;
+      std::vector<Vec3> pts;
+      for (int v : cut.cells[c]) {
+        flat.push_back(cut.flat_m[v]);
+        pts.push_back(cut.folded_m[v]);
+      }
+      Mat3 R;
+      Vec3 p_B;
+      fit_pose(flat, pts, *m.bodies[c].centroid_M, R, p_B);
+      d.p_W.push_back(spec.origin_W + spec.R_W0 * p_B);
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
 }  // namespace
 
 Vec6 plate_joint_stiffness(double E, double nu, double t, double l, double h) {
@@ -345,6 +374,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
     }
     m.bodies.push_back(b);
   }
+  m.shapes = pattern_shapes(p, spec, m);
 
   std::vector<std::vector<CellSideGeometry>> cell_sides(mesh.cells.size());
   std::vector<int> link_element;

@@ -92,7 +92,18 @@ struct DriveDef {
 
 /// Kinds of recorded tables. Chamber tables are made by the recorder, one per chamber (not
 /// a scene probe type).
-enum class ProbeKind { Point, Drive, Reaction, Energy, Contact, Crease, Element, Pose, Chamber };
+enum class ProbeKind {
+  Point,
+  Drive,
+  Reaction,
+  Energy,
+  Contact,
+  Crease,
+  Element,
+  Pose,
+  Chamber,
+  Shape
+};
 
 /// Something a user wants recorded over the run (one CSV per probe).
 struct ProbeDef {
@@ -105,6 +116,15 @@ struct ProbeDef {
   bool pairs = false;  ///< Contact: also record each touching pair's forces
   int crease = -1;     ///< Crease: index into Model::creases
   int element = -1;    ///< Element: index into Model::elements
+  int shape = -1;      ///< Shape: index into Model::shapes
+};
+
+/// A named placement of the whole structure (a pattern's further folded frame, e.g. its
+/// deployed form): where it puts every body's centroid, m. A shape probe measures how far
+/// the run's bodies are from it after the best rigid fit.
+struct ShapeDef {
+  std::string name;
+  std::vector<Vec3> p_W;  ///< one per body, the bodies' order
 };
 
 /// Description of the flat sheet a model was cut from (used by writers and probes).
@@ -131,6 +151,7 @@ struct Model {
   std::vector<LoadDef> loads;
   std::vector<DriveDef> drives;
   std::vector<ProbeDef> probes;
+  std::vector<ShapeDef> shapes;        ///< target placements a shape probe can name
   std::vector<PressureDef> pressures;  ///< pressure loads on segment faces
   std::vector<ChamberDef> chambers;    ///< closed volumes of gas (docs/gas.md)
   ContactDef contact;

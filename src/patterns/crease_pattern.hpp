@@ -49,11 +49,19 @@ struct PatternMeta {
   std::string frame_title;   ///< title of the crease-pattern frame
 };
 
+/// A further named placement of the pattern's vertices in 3-D (a later foldedForm frame of a
+/// FOLD file), e.g. the deployed form that a shape probe compares a run with. Lengths in m.
+struct PatternShape {
+  std::string title;  ///< the frame's frame_title, else "file_frames[k]"
+  std::vector<Vec3> vertices_m;
+};
+
 /// The crease pattern. Faces are vertex loops, counter-clockwise in the flat coordinates.
 struct CreasePattern {
   PatternMeta meta;
   std::vector<Vec2> vertices_flat_m;    ///< flat (unfolded) coordinates, m
   std::vector<Vec3> vertices_folded_m;  ///< folded 3-D coordinates, m; empty if not given
+  std::vector<PatternShape> shapes;     ///< further folded forms (distinct titles)
   std::vector<std::vector<int>> faces;  ///< vertex indices, counter-clockwise
   std::vector<PatternEdge> edges;
   bool has_fold_angles = false;  ///< the file gave edges_foldAngle

@@ -242,12 +242,14 @@ void require_flat(const std::vector<Vec3>& xyz, const Ctx& c) {
   }
 }
 
-// The first file_frames entry classed "foldedForm": its coordinates, on the key frame's mesh.
-void read_folded_frame(const json& root, const Ctx& key, double key_scale,
-                       std::optional<double> given, CreasePattern& p) {
+// The file_frames entries classed "foldedForm", on the key frame's mesh: the first is the
+// folded form (vertices_folded_m), each later one a named shape (PatternShape).
+void read_folded_frames(const json& root, const Ctx& key, double key_scale,
+                        std::optional<double> given, CreasePattern& p) {
   const json* frames = find(root, "file_frames");
   if (!frames) return;
   if (!frames->is_array()) throw InputError(key.src, "file_frames", "must be an array");
+  bool first = true;
   for (std::size_t k = 0; k < frames->size(); ++k) {
     const json& fr = (*frames)[k];
     const Ctx c{key.src, fmt::format("file_frames[{}].", k)};
@@ -265,9 +267,24 @@ void read_folded_frame(const json& root, const Ctx& key, double key_scale,
     int dim = 0;
     const double scale = frame_scale(fr, c, given, key_scale);
     if (scale < 0) throw InputError(c.src, c.field("frame_unit"), "\"unit\" (no physical length)");
-    p.vertices_folded_m = read_coords(fr, c, dim);
-    for (Vec3& v : p.vertices_folded_m) v *= scale;
-    return;
+    std::vector<Vec3> xyz = read_coords(fr, c, dim);
+    for (Vec3& v : xyz) v *= scale;
+    if (first) {
+      p.vertices_folded_m = std::move(xyz);
+      first = false;
+      continue;
+    }
+    std::string title = optional_string(fr, c, "frame_title");
+    if (title.empty()) title = fmt::format("file_frames[{}]", k);
+    for (const PatternShape& earlier : p.shapes) {
+      if (earlier.title == title) {
+        throw InputError(c.src, c.field("frame_title"),
+                         fmt::format("'{}' is the title of an earlier folded frame; the "
+                                     "shapes a probe names must differ",
+                                     title));
+      }
+    }
+    p.shapes.push_back({title, std::move(xyz)});
   }
 }
 
@@ -324,7 +341,7 @@ CreasePattern parse_fold(const std::string& text, const std::string& src,
     p.edges = edges_from_faces(p.faces);
   }
   p.seams = read_seams(root, c);
-  read_folded_frame(root, c, scale, metres_per_unit, p);
+  read_folded_frames(root, c, scale, metres_per_unit, p);
   validate_pattern(p, src);
   return p;
 }

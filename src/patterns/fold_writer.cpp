@@ -26,6 +26,20 @@ bool has_assignment(const CreasePattern& p, EdgeAssignment a) {
   return false;
 }
 
+// One file_frames entry classed foldedForm: 3-D coordinates in m on the key frame's mesh.
+void folded_frame(std::ostringstream& out, const std::string& title,
+                  const std::vector<Vec3>& vertices) {
+  out << "{";
+  if (!title.empty()) out << "\n  \"frame_title\": " << json(title).dump() << ",";
+  out << "\n  \"frame_classes\": [\"foldedForm\"]";
+  out << ",\n  \"frame_attributes\": [\"3D\"]";
+  out << ",\n  \"frame_parent\": 0,\n  \"frame_inherit\": true,\n  \"frame_unit\": \"m\"";
+  array_field(out, "vertices_coords", vertices.size(), [&](std::size_t i) {
+    return json::array({vertices[i].x(), vertices[i].y(), vertices[i].z()});
+  });
+  out << "\n  }";
+}
+
 }  // namespace
 
 std::string fold_text(const CreasePattern& p) {
@@ -62,14 +76,13 @@ std::string fold_text(const CreasePattern& p) {
     });
   }
   if (!p.vertices_folded_m.empty()) {
-    out << ",\n  \"file_frames\": [{\n  \"frame_classes\": [\"foldedForm\"]";
-    out << ",\n  \"frame_attributes\": [\"3D\"]";
-    out << ",\n  \"frame_parent\": 0,\n  \"frame_inherit\": true,\n  \"frame_unit\": \"m\"";
-    array_field(out, "vertices_coords", p.vertices_folded_m.size(), [&](std::size_t i) {
-      const Vec3& v = p.vertices_folded_m[i];
-      return json::array({v.x(), v.y(), v.z()});
-    });
-    out << "\n  }]";
+    out << ",\n  \"file_frames\": [";
+    folded_frame(out, "", p.vertices_folded_m);
+    for (const PatternShape& shape : p.shapes) {
+      out << ", ";
+      folded_frame(out, shape.title, shape.vertices_m);
+    }
+    out << "]";
   }
   out << "\n}\n";
   return out.str();

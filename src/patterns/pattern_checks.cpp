@@ -22,6 +22,13 @@ void check_indices(const CreasePattern& p, const std::string& src) {
                      fmt::format("folded frame has {} vertices, the crease pattern {}",
                                  p.vertices_folded_m.size(), nv));
   }
+  for (const PatternShape& shape : p.shapes) {
+    if (shape.vertices_m.size() != p.vertices_flat_m.size()) {
+      throw InputError(src, "vertices_coords",
+                       fmt::format("folded frame '{}' has {} vertices, the crease pattern {}",
+                                   shape.title, shape.vertices_m.size(), nv));
+    }
+  }
   if (p.faces.empty()) throw InputError(src, "faces_vertices", "no faces; at least one needed");
   for (std::size_t f = 0; f < p.faces.size(); ++f) {
     const std::vector<int>& loop = p.faces[f];

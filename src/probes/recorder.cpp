@@ -7,6 +7,7 @@
 
 #include "collision/contact_forces.hpp"
 #include "core/allocator.hpp"
+#include "core/rigid_fit.hpp"
 #include "core/so3.hpp"
 #include "elements/drive_gauge.hpp"
 #include "elements/element_load.hpp"
@@ -38,6 +39,8 @@ std::string probe_kind_name(ProbeKind kind) {
       return "pose";
     case ProbeKind::Chamber:
       return "chamber";
+    case ProbeKind::Shape:
+      return "shape";
     case ProbeKind::Contact:
       break;
   }
@@ -71,6 +74,8 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
     case ProbeKind::Chamber:
       return {x,        "pressure_Pa", "volume_m3", "mass_kg", "temperature_K",
               "work_J", "injected_kg", "vented_kg"};
+    case ProbeKind::Shape:
+      return {x, "rms_distance_m", "largest_distance_m"};
     case ProbeKind::Contact:
       break;
   }
@@ -104,6 +109,19 @@ std::vector<double> pose_row(double x, const Vec3& p_W, const Mat3& R_WB) {
   if (q.w() < 0) q.coeffs() *= -1;
   const Vec3 r = so3_log<double>(R_WB);
   return {x, p_W.x(), p_W.y(), p_W.z(), q.w(), q.x(), q.y(), q.z(), r.x(), r.y(), r.z()};
+}
+
+// Shape probe: RMS and largest distance of the bodies' centroids from the shape's after the
+// rigid motion that brings them nearest (so a structure that has moved as a whole is at 0).
+std::vector<double> shape_row(double x, const State& s, const ShapeDef& shape) {
+  const RigidFit fit = best_rigid_fit(s.p_W, shape.p_W);
+  double sum = 0, largest = 0;
+  for (std::size_t i = 0; i < s.p_W.size(); ++i) {
+    const double d = (fit.apply(s.p_W[i]) - shape.p_W[i]).norm();
+    sum += d * d;
+    largest = std::max(largest, d);
+  }
+  return {x, std::sqrt(sum / static_cast<double>(s.p_W.size())), largest};
 }
 
 }  // namespace
@@ -194,6 +212,8 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
     }
     case ProbeKind::Pose:
       return pose_row(x, s.p_W[p.body], s.R_WB[p.body]);
+    case ProbeKind::Shape:
+      return shape_row(x, s, model_.shapes[p.shape]);
     case ProbeKind::Chamber:  // handled above
     case ProbeKind::Contact:
       break;

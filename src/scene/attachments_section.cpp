@@ -118,12 +118,14 @@ ProbeKind probe_kind(const Fields& f) {
       {"point", ProbeKind::Point},       {"drive", ProbeKind::Drive},
       {"reaction", ProbeKind::Reaction}, {"energy", ProbeKind::Energy},
       {"contact", ProbeKind::Contact},   {"crease", ProbeKind::Crease},
-      {"element", ProbeKind::Element},   {"pose", ProbeKind::Pose}};
+      {"element", ProbeKind::Element},   {"pose", ProbeKind::Pose},
+      {"shape", ProbeKind::Shape}};
   const std::string type = f.required_word("type");
   const auto it = kinds.find(type);
   if (it == kinds.end()) {
     f.fail("type", quoted(type) +
-                       "; allowed: point, drive, reaction, energy, contact, crease, element, pose");
+                       "; allowed: point, drive, reaction, energy, contact, crease, element, "
+                       "pose, shape");
   }
   return it->second;
 }
@@ -149,7 +151,8 @@ void check_file_names(const Fields& f, const ProbeDef& p, const std::vector<Prob
   }
 }
 
-// Crease, element and pose probes: which crease (1-based), element or body they watch.
+// Crease, element, pose and shape probes: which crease (1-based), element, body or shape
+// they watch.
 void read_target(const Fields& f, const Model& m, ProbeDef& p) {
   if (p.kind == ProbeKind::Crease) {
     if (m.creases.empty()) f.fail("type", "crease probe, but the model has no crease");
@@ -166,6 +169,20 @@ void read_target(const Fields& f, const Model& m, ProbeDef& p) {
     }
   } else if (p.kind == ProbeKind::Pose) {
     p.body = body_by_name(m, f.required_word("body"), f.context("body"));
+  } else if (p.kind == ProbeKind::Shape) {
+    const std::string name = f.required_word("shape");
+    std::string known;
+    for (std::size_t k = 0; k < m.shapes.size(); ++k) {
+      if (m.shapes[k].name == name) p.shape = static_cast<int>(k);
+      known += (k ? ", " : "") + quoted(m.shapes[k].name);
+    }
+    if (p.shape < 0) {
+      f.fail("shape", quoted(name) + " is not a shape of the model (" +
+                          (known.empty() ? std::string("it has none: a pattern's further "
+                                                       "foldedForm frames are its shapes")
+                                         : "its shapes: " + known) +
+                          ")");
+    }
   }
 }
 
@@ -206,9 +223,9 @@ void read_probes(const Fields& root, Model& m) {
   m.probes.clear();
   const auto items = sequence(root.node("probes"), root.context("probes"), "probes");
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const Fields f(
-        items[i], {root.context().file, item_field("probes", i)},
-        {"name", "type", "at", "body", "point", "drive", "drives", "pairs", "crease", "element"});
+    const Fields f(items[i], {root.context().file, item_field("probes", i)},
+                   {"name", "type", "at", "body", "point", "drive", "drives", "pairs", "crease",
+                    "element", "shape"});
     ProbeDef p;
     p.name = f.required_word("name");
     if (p.name.empty() || p.name.find_first_of("/\\ ") != std::string::npos || p.name[0] == '.') {
@@ -222,6 +239,7 @@ void read_probes(const Fields& root, Model& m) {
     if (f.has("element") && p.kind != ProbeKind::Element) {
       f.fail("element", "only for type: element");
     }
+    if (f.has("shape") && p.kind != ProbeKind::Shape) f.fail("shape", "only for type: shape");
     check_file_names(f, p, m.probes);
     if (p.kind == ProbeKind::Point) {
       const MaterialPoint at = read_location(f, m);

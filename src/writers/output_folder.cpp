@@ -64,7 +64,8 @@ void check_file_names(const Scene& scene) {
     check_name(p.name, scene.file, fmt::format("probes[{}].name", k));
     add(p.name + ".csv", k);
     if (p.pairs) add(p.name + "_pairs.csv", k);
-    if (scene.outputs.plot && p.kind == ProbeKind::Drive) add(p.name + ".png", k);
+    const bool plotted = p.kind == ProbeKind::Drive || p.kind == ProbeKind::Shape;
+    if (scene.outputs.plot && plotted) add(p.name + ".png", k);
   }
   // Each chamber's table (probes/recorder.hpp): chamber_<name>.csv and .png.
   for (std::size_t c = 0; c < scene.model.chambers.size(); ++c) {

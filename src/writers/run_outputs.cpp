@@ -96,13 +96,18 @@ FrameAxis abscissa_axis(const std::string& abscissa) {
   return {"pull displacement [mm]", 1e3};
 }
 
-// A chamber's pressure against the run's abscissa.
-Curve chamber_curve(const ProbeTable& t, const std::string& abscissa) {
+bool has_time_curve(const ProbeTable& t) {
+  return t.kind == ProbeKind::Chamber || t.kind == ProbeKind::Shape;
+}
+
+// A chamber's pressure (Pa) or a shape's RMS distance (mm) against the run's abscissa.
+Curve time_curve(const ProbeTable& t, const std::string& abscissa) {
   const FrameAxis axis = abscissa_axis(abscissa);
-  Curve c{axis.label, t.name + " pressure [Pa]", {}, {}};
+  const bool shape = t.kind == ProbeKind::Shape;
+  Curve c{axis.label, t.name + (shape ? " RMS distance [mm]" : " pressure [Pa]"), {}, {}};
   for (const auto& r : t.rows) {
     c.x.push_back(axis.scale * r[0]);
-    c.y.push_back(r[1]);
+    c.y.push_back(shape ? 1e3 * r[1] : r[1]);
   }
   return c;
 }
@@ -384,15 +389,15 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   }
   const std::string title = run_title(scene);
   const std::string warning = unfinished_warning(stats);
-  std::vector<Curve> chamber_curves;
+  // Charts beside the force chart on the HTML page: chambers' pressures, shapes' distances.
+  std::vector<Curve> time_curves;
   for (const ProbeTable& t : rec.tables()) {
-    if (t.kind == ProbeKind::Chamber) chamber_curves.push_back(chamber_curve(t, rec.abscissa()));
+    if (has_time_curve(t)) time_curves.push_back(time_curve(t, rec.abscissa()));
   }
   if (o.plot) {
     for (const ProbeTable& t : rec.tables()) {
-      if (t.kind != ProbeKind::Drive && t.kind != ProbeKind::Chamber) continue;
-      const Curve c =
-          t.kind == ProbeKind::Drive ? drive_curve(t) : chamber_curve(t, rec.abscissa());
+      if (t.kind != ProbeKind::Drive && !has_time_curve(t)) continue;
+      const Curve c = t.kind == ProbeKind::Drive ? drive_curve(t) : time_curve(t, rec.abscissa());
       PlotSpec spec;
       spec.title = title + ": " + t.name;
       spec.x_label = c.x_label;
@@ -419,7 +424,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
     const FrameAxis axis = abscissa_axis(rec.abscissa());
     optional_output(report, "animation.html", [&] {
       HtmlAnnotations notes{warning, {}, {}};
-      for (const Curve& c : chamber_curves) {
+      for (const Curve& c : time_curves) {
         if (c.x.size() == rec.frames().size()) notes.curves.push_back(c);
       }
       if (first_drive && curve.x.size() == rec.frames().size()) {
