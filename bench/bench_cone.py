@@ -3,9 +3,10 @@
 --fold-to-gathered 0.9`, 12 pleats, 6 axial folds) at n x n segments a face, folded and then
 pull-deployed on one thread as a user runs it (outputs on unless --outputs-off). Prints a
 Markdown table per phase (and the fold's coarse stage): segments, steps, Newton iterations,
-factorizations, contact at the end, CPU (user + sys of the finseg process; the coarse stage is
-inside the fold's), wall time and peak memory, the BLAS kernels, and the total against the
-10-minute target (BENCHMARKS.md, "The cone gathered by folding").
+factorizations, contact at the end, the shape probe's RMS distance from the deployed cone, CPU
+(user + sys of the finseg process; the coarse stage is inside the fold's), wall time and peak
+memory, the BLAS kernels, and the total against the 10-minute target (BENCHMARKS.md, "The cone
+gathered by folding").
 
 Usage: python3 bench/bench_cone.py [BUILD_DIR] [--subdivisions N] [--outputs-off] [--keep DIR]
 (default build/release, N = 8: 11 200 segments, about 10-15 minutes on a 2-core VM).
@@ -47,14 +48,17 @@ def summary_rows(name, summary_file, cpu, wall, rss):
     """Rows of a run: its stages before (the fold on a coarse cut) and the run itself."""
     s = json.loads(Path(summary_file).read_text())
     m = s["model"]
-    rows = [f"| {name}: {st['what']} | {counts(st['segments'], '-', st['stats'])} | - "
+    rows = [f"| {name}: {st['what']} | {counts(st['segments'], '-', st['stats'])} | - | - "
             f"| - | {st['wall_time_s']:.1f} | - |" for st in s.get("stages", [])]
     contact = s.get("probes", {}).get("contact", {}).get("final", {})
     pairs = contact.get("touching_pairs")
     points = contact.get("active_points")
     touching = "-" if pairs is None else f"{pairs:.0f} pairs, {points:.0f} points"
+    # The shape probe (gen cone writes one): RMS distance from the deployed cone, mm.
+    shape = s.get("probes", {}).get("shape", {}).get("final", {}).get("rms_distance_m")
+    rms = "-" if shape is None else f"{1e3 * shape:.1f} mm"
     rows.append(f"| {name} | {counts(m['bodies'], m['dofs'], s['stats'])} | {touching} "
-                f"| {cpu:.1f} | {wall:.1f} | {rss / 1e9:.2f} GB |")
+                f"| {rms} | {cpu:.1f} | {wall:.1f} | {rss / 1e9:.2f} GB |")
     return rows, s["provenance"].get("blas_kernels", "")
 
 
@@ -82,8 +86,8 @@ def main():
                         "--out", "deploy", "--threads", "1", "--quiet"] + sets,
                        work, work / "deploy.log")
     print("| phase | segments | DOFs | steps (rejected) | Newton iterations | factorizations "
-          "| contact at the end | CPU (s) | wall (s) | peak RSS |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+          "| contact at the end | from the deployed cone (RMS) | CPU (s) | wall (s) | peak RSS |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     rows, _ = summary_rows("fold", work / "folded" / "summary.json", *fold)
     print("\n".join(rows))
     rows, kernels = summary_rows("deploy", work / "deploy" / "summary.json", *deploy)
