@@ -213,6 +213,8 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 39 (0 fixed)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("drives 22, probes 4"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  shape deployed ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("probe shape (distance from shape deployed)"), std::string::npos) << r.out;
   r = run_finseg(dir,
                  "run re.yaml --out d --set solver.t_end=0.02 --set outputs.vtk=false "
                  "--set outputs.html=false --set outputs.plot=false");

@@ -41,6 +41,8 @@ std::string probe_target(const Model& m, const ProbeDef& p) {
       return "element " + m.elements[p.element].name;
     case ProbeKind::Pose:
       return "pose of " + m.bodies[p.body].name;
+    case ProbeKind::Shape:
+      return "distance from shape " + m.shapes[p.shape].name;
     default:
       return "whole model";
   }
@@ -125,6 +127,10 @@ void inspect(const InspectOptions& o) {
   for (const DriveDef& d : m.drives) {
     fmt::print("  drive {}: body {}, travel {:.6g} m, step {:.6g} m, stiffness {:.6g} N/m\n",
                d.name, m.bodies[d.body].name, d.travel, d.step, d.stiffness);
+  }
+  for (const ShapeDef& shape : m.shapes) {
+    fmt::print("  shape {} (a further folded frame of the pattern; probes of type shape name it)\n",
+               shape.name);
   }
   for (const ProbeDef& p : m.probes) fmt::print("  probe {} ({})\n", p.name, probe_target(m, p));
   if (!o.incidence.empty()) {
