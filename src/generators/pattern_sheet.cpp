@@ -101,15 +101,19 @@ void validate_spec(const PatternSheetSpec& s, const CreasePattern& p, const std:
   }
 }
 
-// Rigid motion (R, p) taking the flat points (x, y, 0) nearest to the folded ones (Kabsch).
-void fit_pose(const std::vector<Vec2>& flat, const std::vector<Vec3>& folded, const Vec2& c_flat,
-              Mat3& R, Vec3& p) {
-  std::vector<Vec3> flat3;
-  flat3.reserve(flat.size());
-  for (const Vec2& x : flat) flat3.emplace_back(x.x(), x.y(), 0);
+// Pose of cell `c` of `mesh` placed on the mesh's folded positions: the rigid motion taking
+// its flat corners (x, y, 0) nearest to the folded ones (Kabsch), applied to its flat centroid
+// c_M, then the spec's placement of the sheet (R_W0, origin_W).
+void cell_pose(const SegmentMesh& mesh, std::size_t c, const Vec2& c_M,
+               const PatternSheetSpec& spec, Mat3& R_WB, Vec3& p_W) {
+  std::vector<Vec3> flat3, folded;
+  for (int v : mesh.cells[c]) {
+    flat3.emplace_back(mesh.flat_m[v].x(), mesh.flat_m[v].y(), 0);
+    folded.push_back(mesh.folded_m[v]);
+  }
   const RigidFit fit = best_rigid_fit(flat3, folded);
-  R = fit.R;
-  p = fit.apply(Vec3(c_flat.x(), c_flat.y(), 0));
+  R_WB = spec.R_W0 * fit.R;
+  p_W = spec.origin_W + spec.R_W0 * fit.apply(Vec3(c_M.x(), c_M.y(), 0));
 }
 
 // The law of a crease side by its pattern edge (index `index`, -1 for a seam), or null for a
@@ -293,18 +297,10 @@ std::vector<ShapeDef> pattern_shapes(const CreasePattern& p, const PatternSheetS
     placed.vertices_folded_m = shape.vertices_m;
     placed.shapes.clear();
     const SegmentMesh cut = subdivide_pattern(placed, subdivision_of(spec));
-    ShapeDef d{shape.title, {}};
+    ShapeDef d{shape.title, std::vector<Vec3>(cut.cells.size())};
     for (std::size_t c = 0; c < cut.cells.size(); ++c) {
-      std::vector<Vec2> flat;
-      std::vector<Vec3> pts;
-      for (int v : cut.cells[c]) {
-        flat.push_back(cut.flat_m[v]);
-        pts.push_back(cut.folded_m[v]);
-      }
-      Mat3 R;
-      Vec3 p_B;
-      fit_pose(flat, pts, *m.bodies[c].centroid_M, R, p_B);
-      d.p_W.push_back(spec.origin_W + spec.R_W0 * p_B);
+      Mat3 R_WB;
+      cell_pose(cut, c, *m.bodies[c].centroid_M, spec, R_WB, d.p_W[c]);
     }
     out.push_back(std::move(d));
   }
@@ -352,11 +348,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     BodyDef b;
     Outline flat;
-    std::vector<Vec3> pts;
-    for (int v : mesh.cells[c]) {
-      flat.push_back(mesh.flat_m[v]);
-      if (folded) pts.push_back(mesh.folded_m[v]);
-    }
+    for (int v : mesh.cells[c]) flat.push_back(mesh.flat_m[v]);
     const double mass = spec.density * polygon_area(flat) * spec.thickness;
     const Vec2 c_M = set_prism(b, flat, spec.thickness, mass);
     b.centroid_M = c_M;
@@ -365,9 +357,7 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
               spec.fixed_faces.end();
     b.name = fmt::format("face{}_cell{}", b.panel + 1, c);
     if (folded) {
-      fit_pose(flat, pts, c_M, b.R0_WB, b.p0_W);
-      b.R0_WB = spec.R_W0 * b.R0_WB;
-      b.p0_W = spec.origin_W + spec.R_W0 * b.p0_W;
+      cell_pose(mesh, c, c_M, spec, b.R0_WB, b.p0_W);
     } else {
       b.R0_WB = spec.R_W0;
       b.p0_W = spec.origin_W + spec.R_W0 * Vec3(c_M.x(), c_M.y(), 0);
