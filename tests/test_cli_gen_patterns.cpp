@@ -212,7 +212,7 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
   r = run_finseg(dir, "inspect re.yaml");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("bodies 39 (0 fixed)"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("drives 22, probes 4"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("drives 22, probes 5"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("  shape deployed ("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("probe shape (distance from shape deployed)"), std::string::npos) << r.out;
   r = run_finseg(dir,
@@ -240,6 +240,20 @@ TEST(CliGenPatterns, ConeStowedByReflectionReadsBackStartsApartAndBadOptionsAreR
     ASSERT_EQ(header, "t_s,rms_distance_m,largest_distance_m");
     ASSERT_GE(rows.size(), 2u);
     EXPECT_LT(rows.back()[1], rows.front()[1]);
+  }
+  {
+    // The unfolding probe towards the same frame: one column per crease line (FOLD edge), and
+    // the pull has begun to open them (none half way in 20 ms).
+    std::string header;
+    const auto rows = test::csv_rows(test::slurp(dir / "d/unfolding.csv"), &header);
+    ASSERT_EQ(header.substr(0, 40), "t_s,lines_half_open,mean_opening,edge1_d");
+    ASSERT_GE(rows.size(), 2u);
+    EXPECT_EQ(rows.front()[2], 0);
+    EXPECT_GT(rows.back()[2], 0);
+    const std::string order = test::slurp(dir / "d/unfolding_order.csv");
+    EXPECT_EQ(order.substr(0, order.find('\n')),
+              "rank,line,start_deg,target_deg,final_deg,final_opening,half_open_t_s,open_90_t_s,"
+              "flat_x_m,flat_y_m");
   }
   // Inflated (--inflate): the wall closed by caps is filled while strings (free across the
   // axis) draw its ends apart, nothing clamped; in its first 20 ms the gas enters and the wall

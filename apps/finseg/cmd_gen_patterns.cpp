@@ -293,7 +293,8 @@ std::string cone_probes(const std::string& probes) {
          "  - {name: energy, type: energy}\n"
          "  - {name: contact, type: contact}\n"
          "  - {name: shape, type: shape, shape: deployed}   # RMS distance from the deployed "
-         "cone\n";
+         "cone\n"
+         "  - {name: unfolding, type: unfolding, shape: deployed}   # which folds open when\n";
 }
 
 // The cone scenes' pull after its drives: `probes` (YAML list items), cone_probes, the

@@ -8,6 +8,7 @@
 
 #include "apps/finseg/commands.hpp"
 #include "elements/assemble.hpp"
+#include "probes/unfolding.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/state_file.hpp"
 #include "solvers/force_check.hpp"
@@ -43,6 +44,9 @@ std::string probe_target(const Model& m, const ProbeDef& p) {
       return "pose of " + m.bodies[p.body].name;
     case ProbeKind::Shape:
       return "distance from shape " + m.shapes[p.shape].name;
+    case ProbeKind::Unfolding:
+      return fmt::format("{} crease lines opening towards {}", unfolding_lines(m, -1).size(),
+                         p.shape < 0 ? std::string("flat") : "shape " + m.shapes[p.shape].name);
     default:
       return "whole model";
   }

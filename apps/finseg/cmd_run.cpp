@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <memory>
@@ -29,6 +30,7 @@
 #include "writers/output_folder.hpp"
 #include "writers/provenance.hpp"
 #include "writers/run_outputs.hpp"
+#include "writers/unfolding_outputs.hpp"
 
 namespace finseg::cli {
 
@@ -105,14 +107,32 @@ std::string progress_text(const RunRecorder& rec, const SolverProgress& p) {
   return s + fmt::format(", {} outputs", rec.outputs());
 }
 
+// How many folded lines came half open, and the first few.
+void print_unfolding(const ProbeTable& t, const std::vector<LineOpening>& order,
+                     const std::string& abscissa) {
+  std::string first;
+  int opened = 0;
+  for (const LineOpening& o : order) {
+    if (!std::isfinite(o.half_open_at)) continue;
+    if (++opened <= 5)
+      first += fmt::format("{} {} at {:.4g}", first.empty() ? ":" : ",", o.name, o.half_open_at);
+  }
+  fmt::print("  {}: {} of {} folded lines came half open{}{} ({}; {})\n", t.name, opened,
+             order.size(), first, opened > 5 ? ", ..." : "", abscissa,
+             unfolding_order_file(t.name));
+}
+
 void print_results(const RunRecorder& rec, const RunOptions& o, const SolverStats& stats,
                    double wall, const Model& model) {
   fmt::print("finseg run {}: {} outputs, {} steps, wall {:.3g} s -> {}\n", o.scene, rec.outputs(),
              stats.steps, wall, o.out);
-  for (const ProbeTable& t : rec.tables()) {
+  for (std::size_t k = 0; k < rec.tables().size(); ++k) {
+    const ProbeTable& t = rec.tables()[k];
     if (t.rows.empty()) continue;
     const auto& r = t.rows.back();
-    if (t.kind == ProbeKind::Point) {
+    if (t.kind == ProbeKind::Unfolding) {
+      print_unfolding(t, unfolding_order(t.rows, rec.unfolding_lines_of(k)), rec.abscissa());
+    } else if (t.kind == ProbeKind::Point) {
       fmt::print("  {}: final [{:.6g}, {:.6g}, {:.6g}] m\n", t.name, r[1], r[2], r[3]);
     } else if (t.kind == ProbeKind::Drive) {
       const nlohmann::json s = probe_summary(t, deployed_at_of(model, t));

@@ -297,10 +297,10 @@ std::vector<ShapeDef> pattern_shapes(const CreasePattern& p, const PatternSheetS
     placed.vertices_folded_m = shape.vertices_m;
     placed.shapes.clear();
     const SegmentMesh cut = subdivide_pattern(placed, subdivision_of(spec));
-    ShapeDef d{shape.title, std::vector<Vec3>(cut.cells.size())};
+    ShapeDef d{shape.title, std::vector<Vec3>(cut.cells.size()),
+               std::vector<Mat3>(cut.cells.size())};
     for (std::size_t c = 0; c < cut.cells.size(); ++c) {
-      Mat3 R_WB;
-      cell_pose(cut, c, *m.bodies[c].centroid_M, spec, R_WB, d.p_W[c]);
+      cell_pose(cut, c, *m.bodies[c].centroid_M, spec, d.R_WB[c], d.p_W[c]);
     }
     out.push_back(std::move(d));
   }
@@ -420,6 +420,8 @@ Model build_pattern_model(const CreasePattern& p, const PatternSheetSpec& spec,
         const double target =
             l.seam >= 0 ? -seam_edge.fold_angle : pattern_fold_angle(p, l.pattern_edge);
         m.creases.push_back(pattern_crease(pe, target, law, spec, len, fold));
+        m.creases.back().line =
+            l.seam >= 0 ? fmt::format("seam{}", l.seam) : fmt::format("edge{}", l.pattern_edge);
         e.crease = static_cast<int>(m.creases.size()) - 1;
         if (l.seam < 0) {
           e.name = fmt::format("crease{}_c{}_c{}", l.pattern_edge + 1, l.left, l.right);

@@ -183,7 +183,12 @@ Model build_sheet_model(const SheetSpec& spec) {
     m.bodies.push_back(b);
   }
 
-  for (const FoldSpec& f : spec.folds) m.creases.push_back({f.law, f.angle});
+  for (const FoldSpec& f : spec.folds) {
+    CreaseDef c;
+    c.law = f.law;
+    c.initial_fold_angle = f.angle;
+    m.creases.push_back(c);
+  }
   // Joint i joins body i (outer, e-) to body i+1 (inner, e+) on the strip's centre line.
   for (int i = 0; i + 1 < n_along; ++i) {
     const Joint& j = joints[i];

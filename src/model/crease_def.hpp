@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 namespace finseg {
 
@@ -18,6 +19,9 @@ struct CreaseDef {
   /// rad, signed like the fold angle: where folding by simulation takes the crease
   /// (docs/folding.md); 0: the crease is not folded.
   double target_fold_angle = 0;
+  /// The crease line it is a piece of, e.g. "edge17" or "seam2" (0-based FOLD edge or
+  /// `finseg:seams` index) on a pattern cut into segments; empty: a line of its own.
+  std::string line{};
 };
 
 }  // namespace finseg

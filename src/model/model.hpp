@@ -102,7 +102,8 @@ enum class ProbeKind {
   Element,
   Pose,
   Chamber,
-  Shape
+  Shape,
+  Unfolding
 };
 
 /// Something a user wants recorded over the run (one CSV per probe).
@@ -116,7 +117,7 @@ struct ProbeDef {
   bool pairs = false;  ///< Contact: also record each touching pair's forces
   int crease = -1;     ///< Crease: index into Model::creases
   int element = -1;    ///< Element: index into Model::elements
-  int shape = -1;      ///< Shape: index into Model::shapes
+  int shape = -1;      ///< Shape, Unfolding: index into Model::shapes (Unfolding: -1 = flat)
 };
 
 /// A named placement of the whole structure (a pattern's further folded frame, e.g. its
@@ -124,7 +125,8 @@ struct ProbeDef {
 /// the run's bodies are from it after the best rigid fit.
 struct ShapeDef {
   std::string name;
-  std::vector<Vec3> p_W;  ///< one per body, the bodies' order
+  std::vector<Vec3> p_W;   ///< one per body, the bodies' order
+  std::vector<Mat3> R_WB;  ///< one per body: its orientation there (the creases' angles)
 };
 
 /// Description of the flat sheet a model was cut from (used by writers and probes).

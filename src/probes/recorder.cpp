@@ -41,6 +41,8 @@ std::string probe_kind_name(ProbeKind kind) {
       return "chamber";
     case ProbeKind::Shape:
       return "shape";
+    case ProbeKind::Unfolding:
+      return "unfolding";
     case ProbeKind::Contact:
       break;
   }
@@ -76,6 +78,7 @@ std::vector<std::string> columns_of(ProbeKind kind, const std::string& x) {
               "work_J", "injected_kg", "vented_kg"};
     case ProbeKind::Shape:
       return {x, "rms_distance_m", "largest_distance_m"};
+    case ProbeKind::Unfolding:  // its columns depend on the model: unfolding_columns
     case ProbeKind::Contact:
       break;
   }
@@ -135,7 +138,15 @@ RunRecorder::RunRecorder(const Model& model, const SolverSettings& settings,
       last_x_(NAN) {
   for (const ProbeDef& p : model.probes) {
     const bool pairs = p.pairs && p.kind == ProbeKind::Contact;
-    tables_.push_back({p.name, p.kind, columns_of(p.kind, abscissa_), {}, pairs, {}});
+    const bool unfolding = p.kind == ProbeKind::Unfolding;
+    lines_.push_back(unfolding ? unfolding_lines(model, p.shape) : std::vector<UnfoldingLine>{});
+    tables_.push_back(
+        {p.name,
+         p.kind,
+         unfolding ? unfolding_columns(abscissa_, lines_.back()) : columns_of(p.kind, abscissa_),
+         {},
+         pairs,
+         {}});
     crease_elements_.push_back(p.kind == ProbeKind::Crease ? crease_elements(model, p.crease)
                                                            : std::vector<int>{});
   }
@@ -147,6 +158,11 @@ RunRecorder::RunRecorder(const Model& model, const SolverSettings& settings,
                        false,
                        {}});
   }
+}
+
+const std::vector<UnfoldingLine>& RunRecorder::unfolding_lines_of(std::size_t k) const {
+  static const std::vector<UnfoldingLine> none;
+  return k < lines_.size() ? lines_[k] : none;
 }
 
 std::string chamber_table_name(const ChamberDef& chamber) {
@@ -214,6 +230,14 @@ std::vector<double> RunRecorder::row(std::size_t probe, const State& s, const Bo
       return pose_row(x, s.p_W[p.body], s.R_WB[p.body]);
     case ProbeKind::Shape:
       return shape_row(x, s, model_.shapes[p.shape]);
+    case ProbeKind::Unfolding: {
+      // Openings count from the table's first row: the state the run started from.
+      const auto& rows = tables_[probe].rows;
+      const std::vector<double> start =
+          rows.empty() ? std::vector<double>{}
+                       : std::vector<double>(rows[0].begin() + kFirstLineColumn, rows[0].end());
+      return unfolding_row(x, line_fold_angles(model_, s, lines_[probe]), start, lines_[probe]);
+    }
     case ProbeKind::Chamber:  // handled above
     case ProbeKind::Contact:
       break;

@@ -12,6 +12,7 @@
 #include "model/model.hpp"
 #include "model/state.hpp"
 #include "probes/deployment_phases.hpp"
+#include "probes/unfolding.hpp"
 #include "solvers/solver.hpp"
 #include "writers/frames.hpp"
 
@@ -64,6 +65,8 @@ class RunRecorder {
   double last_abscissa() const { return last_x_; }
   const std::string& abscissa() const { return abscissa_; }
   std::size_t outputs() const { return outputs_; }  ///< outputs recorded so far
+  /// The lines of table k when it is an unfolding probe's (empty for other tables).
+  const std::vector<UnfoldingLine>& unfolding_lines_of(std::size_t k) const;
 
   /// Replaces what was recorded by what a checkpoint saved (`finseg run --resume`): tables
   /// are this recorder's (same probes, same order) with their rows.
@@ -80,6 +83,7 @@ class RunRecorder {
   bool dynamic_ = false;
   std::vector<ProbeTable> tables_;
   std::vector<std::vector<int>> crease_elements_;  ///< per probe: a crease probe's elements
+  std::vector<std::vector<UnfoldingLine>> lines_;  ///< per probe: an unfolding probe's lines
   std::vector<Frame> frames_;
   std::vector<PhaseSample> samples_;
   double last_x_;

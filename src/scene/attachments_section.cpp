@@ -119,13 +119,13 @@ ProbeKind probe_kind(const Fields& f) {
       {"reaction", ProbeKind::Reaction}, {"energy", ProbeKind::Energy},
       {"contact", ProbeKind::Contact},   {"crease", ProbeKind::Crease},
       {"element", ProbeKind::Element},   {"pose", ProbeKind::Pose},
-      {"shape", ProbeKind::Shape}};
+      {"shape", ProbeKind::Shape},       {"unfolding", ProbeKind::Unfolding}};
   const std::string type = f.required_word("type");
   const auto it = kinds.find(type);
   if (it == kinds.end()) {
     f.fail("type", quoted(type) +
                        "; allowed: point, drive, reaction, energy, contact, crease, element, "
-                       "pose, shape");
+                       "pose, shape, unfolding");
   }
   return it->second;
 }
@@ -133,6 +133,7 @@ ProbeKind probe_kind(const Fields& f) {
 // Names of the files a probe's table goes to (without ".csv").
 std::vector<std::string> file_stems(const ProbeDef& p) {
   if (p.pairs) return {p.name, p.name + "_pairs"};
+  if (p.kind == ProbeKind::Unfolding) return {p.name, p.name + "_order"};
   return {p.name};
 }
 
@@ -151,8 +152,23 @@ void check_file_names(const Fields& f, const ProbeDef& p, const std::vector<Prob
   }
 }
 
-// Crease, element, pose and shape probes: which crease (1-based), element, body or shape
-// they watch.
+// The model's shape named by field `shape`.
+int shape_index(const Fields& f, const Model& m) {
+  const std::string name = f.required_word("shape");
+  std::string known;
+  for (std::size_t k = 0; k < m.shapes.size(); ++k) {
+    if (m.shapes[k].name == name) return static_cast<int>(k);
+    known += (k ? ", " : "") + quoted(m.shapes[k].name);
+  }
+  f.fail("shape", quoted(name) + " is not a shape of the model (" +
+                      (known.empty() ? std::string("it has none: a pattern's further "
+                                                   "foldedForm frames are its shapes")
+                                     : "its shapes: " + known) +
+                      ")");
+}
+
+// Crease, element, pose, shape and unfolding probes: which crease (1-based), element, body
+// or shape they watch.
 void read_target(const Fields& f, const Model& m, ProbeDef& p) {
   if (p.kind == ProbeKind::Crease) {
     if (m.creases.empty()) f.fail("type", "crease probe, but the model has no crease");
@@ -170,19 +186,10 @@ void read_target(const Fields& f, const Model& m, ProbeDef& p) {
   } else if (p.kind == ProbeKind::Pose) {
     p.body = body_by_name(m, f.required_word("body"), f.context("body"));
   } else if (p.kind == ProbeKind::Shape) {
-    const std::string name = f.required_word("shape");
-    std::string known;
-    for (std::size_t k = 0; k < m.shapes.size(); ++k) {
-      if (m.shapes[k].name == name) p.shape = static_cast<int>(k);
-      known += (k ? ", " : "") + quoted(m.shapes[k].name);
-    }
-    if (p.shape < 0) {
-      f.fail("shape", quoted(name) + " is not a shape of the model (" +
-                          (known.empty() ? std::string("it has none: a pattern's further "
-                                                       "foldedForm frames are its shapes")
-                                         : "its shapes: " + known) +
-                          ")");
-    }
+    p.shape = shape_index(f, m);
+  } else if (p.kind == ProbeKind::Unfolding) {
+    if (m.creases.empty()) f.fail("type", "unfolding probe, but the model has no crease");
+    if (f.has("shape")) p.shape = shape_index(f, m);  // else the creases open to flat
   }
 }
 
@@ -239,7 +246,9 @@ void read_probes(const Fields& root, Model& m) {
     if (f.has("element") && p.kind != ProbeKind::Element) {
       f.fail("element", "only for type: element");
     }
-    if (f.has("shape") && p.kind != ProbeKind::Shape) f.fail("shape", "only for type: shape");
+    if (f.has("shape") && p.kind != ProbeKind::Shape && p.kind != ProbeKind::Unfolding) {
+      f.fail("shape", "only for type: shape or unfolding");
+    }
     check_file_names(f, p, m.probes);
     if (p.kind == ProbeKind::Point) {
       const MaterialPoint at = read_location(f, m);

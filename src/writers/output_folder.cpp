@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "probes/recorder.hpp"
 #include "writers/atomic_write.hpp"
+#include "writers/unfolding_outputs.hpp"
 
 namespace finseg {
 namespace {
@@ -64,8 +65,13 @@ void check_file_names(const Scene& scene) {
     check_name(p.name, scene.file, fmt::format("probes[{}].name", k));
     add(p.name + ".csv", k);
     if (p.pairs) add(p.name + "_pairs.csv", k);
-    const bool plotted = p.kind == ProbeKind::Drive || p.kind == ProbeKind::Shape;
+    const bool plotted =
+        p.kind == ProbeKind::Drive || p.kind == ProbeKind::Shape || p.kind == ProbeKind::Unfolding;
     if (scene.outputs.plot && plotted) add(p.name + ".png", k);
+    if (p.kind == ProbeKind::Unfolding) {
+      add(unfolding_order_file(p.name), k);
+      if (scene.outputs.plot) add(unfolding_map_file(p.name), k);
+    }
   }
   // Each chamber's table (probes/recorder.hpp): chamber_<name>.csv and .png.
   for (std::size_t c = 0; c < scene.model.chambers.size(); ++c) {

@@ -64,7 +64,32 @@ std::string data_file(const PlotSpec& spec) {
       out += fmt::format("{:.10g} {:.10g}\n", ser.x[i], ser.y[i]);
     }
   }
+  if (spec.segments.empty()) return out;
+  // Two blocks: the segments with a value (x y dx dy value), then the grey ones.
+  for (const bool valued : {true, false}) {
+    if (block++ > 0) out += "\n\n";
+    out += fmt::format("# segments {}: {} (x y dx dy value)\n", block - 1,
+                       valued ? spec.segment_label : spec.grey_label);
+    for (const PlotSegment& g : spec.segments) {
+      if (std::isfinite(g.value) != valued) continue;
+      out += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g} {:.10g}\n", g.x0, g.y0, g.x1 - g.x0,
+                         g.y1 - g.y0, valued ? g.value : 0.0);
+    }
+    // gnuplot refuses an empty block; a zero-length piece draws nothing.
+    const PlotSegment& g0 = spec.segments.front();
+    out += fmt::format("{:.10g} {:.10g} 0 0 NaN\n", g0.x0, g0.y0);
+  }
   return out;
+}
+
+// The plot commands of a map's segments (after the bands' and series' blocks).
+std::string segment_commands(const PlotSpec& spec, const std::string& dat_path,
+                             std::size_t first_block) {
+  return fmt::format(
+      "  {} index {} using 1:2:3:4:5 with vectors nohead lw 2.5 lc palette title {}, \\\n"
+      "  {} index {} using 1:2:3:4 with vectors nohead lw 1.5 lc rgb '#b0b0b0' title {}\n",
+      gp_quote(dat_path), first_block, gp_quote(spec.segment_label), gp_quote(dat_path),
+      first_block + 1, gp_quote(spec.grey_label));
 }
 
 std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
@@ -126,6 +151,12 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
         spec.markers.size() + p + 1, gp_quote(pt.label), pt.x, pt.y, right_half ? "right" : "left",
         right_half ? -1 : 1, pt.above ? 1 : -1);
   }
+  if (!spec.segments.empty()) {
+    g += "set size ratio -1\nset autoscale xfix\nset autoscale yfix\n";
+    g += "set offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03\n";
+    g += "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')\n";
+    g += "set cblabel " + gp_quote(spec.segment_label) + "\n";
+  }
   g += "plot \\\n";
   const std::size_t bands = spec.bands.size();
   for (std::size_t b = 0; b < bands; ++b) {
@@ -140,8 +171,9 @@ std::string script(const PlotSpec& spec, bool png, const std::string& out_path,
         "  {} index {} using 1:2 with {} lt {} title {}{}\n", gp_quote(dat_path), bands + s,
         ser.style,
         (ser.colour >= 0 ? static_cast<std::size_t>(ser.colour) : s) % std::size(kColours) + 1,
-        gp_quote(ser.title), s + 1 < spec.series.size() ? ", \\" : "");
+        gp_quote(ser.title), s + 1 < spec.series.size() || !spec.segments.empty() ? ", \\" : "");
   }
+  if (!spec.segments.empty()) g += segment_commands(spec, dat_path, bands + spec.series.size());
   g += "unset output\n";
   return g;
 }
@@ -208,7 +240,9 @@ void write_plot(const std::string& path, const PlotSpec& spec) {
   if (!png && !ends_with(path, ".svg")) {
     throw std::invalid_argument("plot '" + path + "': the file name must end in .png or .svg");
   }
-  if (spec.series.empty()) throw std::invalid_argument("plot '" + path + "': no series");
+  if (spec.series.empty() && spec.segments.empty()) {
+    throw std::invalid_argument("plot '" + path + "': no series");
+  }
   for (const PlotBand& b : spec.bands) {
     if (b.x.size() != b.lower.size() || b.x.size() != b.upper.size()) {
       throw std::invalid_argument(

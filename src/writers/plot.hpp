@@ -33,12 +33,24 @@ struct PlotBand {
   std::vector<double> x, lower, upper;
 };
 
+/// A straight piece drawn in the colour of its value on the colour bar (e.g. a crease on the
+/// flat sheet coloured by when it opened); a value that is not finite is drawn grey.
+struct PlotSegment {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  double value = 0;
+};
+
 struct PlotSpec {
   std::string title, x_label, y_label;  ///< labels carry units
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;
   std::vector<PlotPoint> points;
   std::vector<PlotBand> bands;  ///< drawn beneath the series
+  /// Drawn after the series, in the colours of a colour bar titled `segment_label`; a plot
+  /// with segments keeps x and y at the same scale (a map).
+  std::vector<PlotSegment> segments;
+  std::string segment_label;
+  std::string grey_label = "never";  ///< legend of the segments whose value is not finite
   /// Shown in red across the top when not empty, e.g. "RUN DIVERGED: ...": a plot of a run
   /// that did not finish must not look like a finished one.
   std::string warning;

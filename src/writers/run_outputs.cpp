@@ -11,18 +11,16 @@
 #include "probes/deployment_peak.hpp"
 #include "writers/atomic_write.hpp"
 #include "writers/html_animation.hpp"
+#include "writers/json_numbers.hpp"
 #include "writers/plot.hpp"
 #include "writers/provenance.hpp"
+#include "writers/unfolding_outputs.hpp"
 #include "writers/vtk.hpp"
 
 namespace finseg {
 namespace {
 
 namespace fs = std::filesystem;
-
-nlohmann::json or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
-}
 
 nlohmann::json solver_json(const SolverSettings& s) {
   return {{"type", solver_name(s.kind)},
@@ -97,12 +95,15 @@ FrameAxis abscissa_axis(const std::string& abscissa) {
 }
 
 bool has_time_curve(const ProbeTable& t) {
-  return t.kind == ProbeKind::Chamber || t.kind == ProbeKind::Shape;
+  return t.kind == ProbeKind::Chamber || t.kind == ProbeKind::Shape ||
+         t.kind == ProbeKind::Unfolding;
 }
 
-// A chamber's pressure (Pa) or a shape's RMS distance (mm) against the run's abscissa.
+// A chamber's pressure (Pa), a shape's RMS distance (mm) or the count of folds at least half
+// open against the run's abscissa.
 Curve time_curve(const ProbeTable& t, const std::string& abscissa) {
   const FrameAxis axis = abscissa_axis(abscissa);
+  if (t.kind == ProbeKind::Unfolding) return unfolding_curve(t.name, t.rows, axis);
   const bool shape = t.kind == ProbeKind::Shape;
   Curve c{axis.label, t.name + (shape ? " RMS distance [mm]" : " pressure [Pa]"), {}, {}};
   for (const auto& r : t.rows) {
@@ -233,6 +234,12 @@ std::string unfinished_warning(const SolverStats& stats) {
                      stats.message.empty() ? "" : ": ", stats.message);
 }
 
+// A run's unfinished warning as a plot's banner: the full message is in summary.json and on
+// the HTML page; a plot line must fit.
+std::string plot_warning(const std::string& warning) {
+  return warning.size() > 110 ? warning.substr(0, 107) + "..." : warning;
+}
+
 // The run's title: the scene's, else its file name without extension.
 std::string run_title(const Scene& scene) {
   return scene.title.empty() ? fs::path(scene.file).stem().string() : scene.title;
@@ -243,6 +250,27 @@ DeploymentPhases run_phases(const Scene& scene, const RunRecorder& rec) {
   const PhaseSettings& p = scene.outputs.phases;
   if (!p.enabled || rec.phase_samples().empty()) return {NAN, NAN, NAN};
   return detect_phases(rec.phase_samples(), p.bend_threshold);
+}
+
+// An unfolding probe's order (CSV) and, with plots, its curves and its map of the sheet.
+void write_unfolding_files(const std::string& dir, const std::string& title,
+                           const std::string& warning, const RunRecorder& rec, std::size_t k,
+                           bool plot, RunReport& report) {
+  const ProbeTable& t = rec.tables()[k];
+  const std::vector<UnfoldingLine>& lines = rec.unfolding_lines_of(k);
+  const std::vector<LineOpening> order = unfolding_order(t.rows, lines);
+  write_csv(dir, unfolding_order_file(t.name), unfolding_order_csv(order, rec.abscissa()), report);
+  if (!plot || t.rows.empty()) return;
+  const FrameAxis axis = abscissa_axis(rec.abscissa());
+  PlotSpec curves = unfolding_curve_plot(title, t.name, t.rows, order.size(), axis);
+  curves.warning = plot_warning(warning);
+  optional_output(report, t.name + ".png",
+                  [&] { write_plot((fs::path(dir) / (t.name + ".png")).string(), curves); });
+  PlotSpec map = unfolding_map_plot(title, lines, order, axis);
+  map.warning = curves.warning;
+  if (map.segments.empty()) return;
+  const std::string file = unfolding_map_file(t.name);
+  optional_output(report, file, [&] { write_plot((fs::path(dir) / file).string(), map); });
 }
 
 }  // namespace
@@ -307,6 +335,8 @@ nlohmann::json probe_summary(const ProbeTable& t, double deployed_at) {
   const auto& last = t.rows.back();
   if (t.kind == ProbeKind::Point) {
     j["final"] = {last[1], last[2], last[3]};
+  } else if (t.kind == ProbeKind::Unfolding) {  // the lines' angles are in its CSV
+    j["final"] = {{t.columns[0], last[0]}, {t.columns[1], last[1]}, {t.columns[2], last[2]}};
   } else {
     nlohmann::json f;
     for (std::size_t c = 0; c < t.columns.size(); ++c) f[t.columns[c]] = last[c];
@@ -329,8 +359,14 @@ nlohmann::json run_summary(const Scene& scene, const RunRecorder& rec, const Sol
                            double wall_seconds, const RunReport& report,
                            const std::vector<RunStage>& stages) {
   nlohmann::json probes = nlohmann::json::object();
-  for (const ProbeTable& t : rec.tables())
+  for (std::size_t k = 0; k < rec.tables().size(); ++k) {
+    const ProbeTable& t = rec.tables()[k];
     probes[t.name] = probe_summary(t, deployed_at_of(scene.model, t));
+    if (t.kind != ProbeKind::Unfolding) continue;
+    const auto& lines = rec.unfolding_lines_of(k);
+    probes[t.name].update(
+        unfolding_summary(t.name, lines.size(), unfolding_order(t.rows, lines), t.rows));
+  }
   nlohmann::json overrides = nlohmann::json::array();
   for (const Override& o : scene.overrides) overrides.push_back(o.path + "=" + o.value);
   nlohmann::json j{
@@ -394,9 +430,15 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
   for (const ProbeTable& t : rec.tables()) {
     if (has_time_curve(t)) time_curves.push_back(time_curve(t, rec.abscissa()));
   }
+  for (std::size_t k = 0; k < rec.tables().size(); ++k) {
+    if (rec.tables()[k].kind == ProbeKind::Unfolding) {
+      write_unfolding_files(dir, title, warning, rec, k, o.plot, report);
+    }
+  }
   if (o.plot) {
     for (const ProbeTable& t : rec.tables()) {
       if (t.kind != ProbeKind::Drive && !has_time_curve(t)) continue;
+      if (t.kind == ProbeKind::Unfolding) continue;  // write_unfolding_files
       const Curve c = t.kind == ProbeKind::Drive ? drive_curve(t) : time_curve(t, rec.abscissa());
       PlotSpec spec;
       spec.title = title + ": " + t.name;
@@ -406,8 +448,7 @@ RunReport write_run_outputs(const std::string& dir, const Scene& scene, const Ru
       if (&t == first_drive && o.phases.enabled) spec.markers = phase_markers(phases);
       for (const ChartMark& m : peak_marks(probes[t.name]))
         spec.points.push_back({m.x, m.y, m.label});
-      // The full message is in summary.json and on the HTML page; a plot line must fit.
-      spec.warning = warning.size() > 110 ? warning.substr(0, 107) + "..." : warning;
+      spec.warning = plot_warning(warning);
       optional_output(report, t.name + ".png",
                       [&] { write_plot((fs::path(dir) / (t.name + ".png")).string(), spec); });
     }
