@@ -8,13 +8,22 @@
 #include <map>
 
 #include "elements/bushing.hpp"
+#include "model/segment_shape.hpp"
 
 namespace finseg {
 namespace {
 
-// Fold angle of crease element k for the bodies' orientations R_WB, nearest to `previous`.
-double element_fold_angle(const ElementDef& e, const std::vector<Mat3>& R_WB, double previous) {
-  return fold_angle<double>(R_WB[e.inner] * e.R_inner_E, R_WB[e.outer] * e.R_outer_F, previous);
+// Mean fold angle of a line's crease elements for the bodies' orientations R_WB, each nearest
+// to its element's last accepted angle in `history` (none: the principal angle, for a shape).
+double mean_fold_angle(const Model& model, const UnfoldingLine& line, const std::vector<Mat3>& R_WB,
+                       const std::vector<ElementHistory>* history) {
+  double sum = 0;
+  for (int k : line.elements) {
+    const ElementDef& e = model.elements[k];
+    sum += fold_angle<double>(R_WB[e.inner] * e.R_inner_E, R_WB[e.outer] * e.R_outer_F,
+                              history ? (*history)[k].fold_angle : 0.0);
+  }
+  return sum / static_cast<double>(line.elements.size());
 }
 
 // Where element e's side lies on the flat sheet: the side of its outer body's outline that
@@ -26,9 +35,7 @@ bool flat_side(const BodyDef& outer, const ElementDef& e, std::array<Vec2, 2>& s
   const std::size_t n = outer.outline_B.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 &a = outer.outline_B[i], &b = outer.outline_B[(i + 1) % n];
-    const double len2 = (b - a).squaredNorm();
-    const double u = len2 > 0 ? std::clamp((P - a).dot(b - a) / len2, 0.0, 1.0) : 0.0;
-    const double d = (a + u * (b - a) - P).norm();
+    const double d = point_segment_distance(P, a, b);
     if (d >= nearest) continue;
     nearest = d;
     side_M = {*outer.centroid_M + a, *outer.centroid_M + b};
@@ -66,14 +73,9 @@ std::vector<UnfoldingLine> unfolding_lines(const Model& model, int shape) {
   std::stable_sort(lines.begin(), lines.end(), [](const UnfoldingLine& a, const UnfoldingLine& b) {
     return reads_before(a.name, b.name);
   });
-  for (UnfoldingLine& l : lines) {
-    if (shape < 0) continue;
-    double sum = 0;
-    for (int k : l.elements) {
-      sum += element_fold_angle(model.elements[k], model.shapes[shape].R_WB, 0.0);
-    }
-    l.target = sum / static_cast<double>(l.elements.size());
-  }
+  if (shape < 0) return lines;  // towards flat: targets 0
+  for (UnfoldingLine& l : lines)
+    l.target = mean_fold_angle(model, l, model.shapes[shape].R_WB, nullptr);
   return lines;
 }
 
@@ -82,11 +84,7 @@ std::vector<double> line_fold_angles(const Model& model, const State& state,
   std::vector<double> out;
   out.reserve(lines.size());
   for (const UnfoldingLine& l : lines) {
-    double sum = 0;
-    for (int k : l.elements) {
-      sum += element_fold_angle(model.elements[k], state.R_WB, state.history[k].fold_angle);
-    }
-    out.push_back(sum / static_cast<double>(l.elements.size()));
+    out.push_back(mean_fold_angle(model, l, state.R_WB, &state.history));
   }
   return out;
 }
