@@ -224,6 +224,9 @@ TEST(ConeGathered, TheWallStowedByReflectionStartsApart) {
       EXPECT_EQ(scene.model.drives[k].travel, inflated ? gauge.travel : 0.0);
     }
     EXPECT_EQ(scene.model.chambers.size(), inflated ? 1u : 0u);
+    // The pulls measure their error at the facets' points; the inflations, whose first contact
+    // grazes, in m and rad (docs/solvers.md, "The error at a segment's points").
+    EXPECT_EQ(scene.solver.error_at_points, !inflated);
     for (const DriveDef& d : scene.model.drives) {
       EXPECT_EQ(d.lateral_ratio, inflated ? 0 : 1);
       EXPECT_EQ(d.pull_only, inflated);

@@ -21,11 +21,16 @@ std::string scheme_name(ImplicitScheme scheme) {
   return scheme == ImplicitScheme::GeneralizedAlpha ? "generalized_alpha" : "backward_euler";
 }
 
+std::string error_measure_name(bool at_points) {
+  return at_points ? "points" : "dofs";
+}
+
 SolverSettings read_solver_section(const Fields& root) {
-  const Fields f(root.node("solver"), root.context("solver"),
-                 {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol",
-                  "load_steps", "max_iterations", "tolerance", "scheme", "rho_inf",
-                  "jacobian_reuse", "jacobian_max_age", "krylov_steps", "newton_tolerance"});
+  const Fields f(
+      root.node("solver"), root.context("solver"),
+      {"type", "t_end", "output_interval", "dt", "dt_min", "dt_max", "rtol", "atol", "load_steps",
+       "max_iterations", "tolerance", "scheme", "rho_inf", "jacobian_reuse", "jacobian_max_age",
+       "krylov_steps", "newton_tolerance", "error_measure"});
   SolverSettings s;
   const std::string type = f.word("type", "static");
   if (type == "static") {
@@ -63,6 +68,11 @@ SolverSettings read_solver_section(const Fields& root) {
   s.jacobian_max_age = f.integer("jacobian_max_age", s.jacobian_max_age, 1, 1000);
   s.newton_tolerance =
       f.number("newton_tolerance", s.newton_tolerance, interval(0, 1, true, false));  // (0, 1]
+  const std::string measure = f.word("error_measure", error_measure_name(s.error_at_points));
+  if (measure != "points" && measure != "dofs") {
+    f.fail("error_measure", "'" + measure + "'; allowed: dofs (m and rad), points (m)");
+  }
+  s.error_at_points = measure == "points";
   if (s.dt > s.t_end) f.fail("dt", "must not exceed t_end");
   return s;
 }

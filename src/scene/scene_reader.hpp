@@ -58,5 +58,7 @@ Scene parse_scene(const std::string& yaml, const std::string& file,
 std::string solver_name(SolverKind kind);
 /// Scene-file word of an implicit scheme: "backward_euler" or "generalized_alpha".
 std::string scheme_name(ImplicitScheme scheme);
+/// The scene's word for SolverSettings::error_at_points: "points" or "dofs".
+std::string error_measure_name(bool at_points);
 
 }  // namespace finseg

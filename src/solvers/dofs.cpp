@@ -157,6 +157,18 @@ bool add_on_pattern(const Eigen::SparseMatrix<double>& B, Eigen::SparseMatrix<do
   return true;
 }
 
+Eigen::VectorXd displacement_weights(const Model& model) {
+  Eigen::VectorXd w(model.num_dofs);
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    const int d = model.dof_of_body[i];
+    if (d < 0) continue;
+    const BodyDef& b = model.bodies[i];
+    w.segment<3>(d).setOnes();
+    w.segment<3>(d + 3).setConstant(std::hypot(outline_radius(b.outline_B), 0.5 * b.thickness));
+  }
+  return w;
+}
+
 Eigen::VectorXd velocity_vector(const Model& model, const State& state) {
   Eigen::VectorXd v(model.num_dofs);
   for (size_t i = 0; i < model.bodies.size(); ++i) {

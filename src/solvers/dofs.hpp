@@ -42,6 +42,12 @@ void right_multiply_rotation_columns(const Model& model, const RotationBlocks& T
 /// where every stored entry of B falls on A's pattern (A compressed); else false, A unchanged.
 bool add_on_pattern(const Eigen::SparseMatrix<double>& B, Eigen::SparseMatrix<double>& A);
 
+/// Per degree of freedom, the length that turns it into the largest displacement of a point
+/// of its body: 1 for translations, the body's radius (farthest corner of its prism from the
+/// centroid, m/rad) for rotations. A vector in m and rad weighted by it is in m: a small
+/// segment's rotation counts by how far it moves the segment (docs/solvers.md, "Step control").
+Eigen::VectorXd displacement_weights(const Model& model);
+
 /// Velocities (v_W, w_W) of the free bodies as one vector, and back.
 Eigen::VectorXd velocity_vector(const Model& model, const State& state);
 void set_velocity(const Model& model, State& state, const Eigen::VectorXd& v);

@@ -28,13 +28,15 @@ class GeneralizedAlpha final : public TimeStepper {
       : p_(chung_hulbert(s.rho_inf)),
         max_iterations_(newton_iterations(s)),
         tol_(tol),
-        newton_tol_(s.newton_tolerance * tol) {
+        newton_tol_(s.newton_tolerance * tol),
+        at_points_(s.error_at_points) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
     reuse_.krylov = s.krylov_steps;
   }
 
   // vdot_0 = M^-1 (g - gyro); the pseudo-acceleration starts equal to it.
   void begin(const Model& model, const State& state, const BodyForces& f) override {
+    weights_ = at_points_ ? displacement_weights(model) : Eigen::VectorXd::Ones(model.num_dofs);
     const SolverMemory& m = state.solver;
     const auto n = static_cast<std::size_t>(model.num_dofs);
     if (m.t == state.t && m.vdot.size() == n && m.accel.size() == n) {
@@ -67,10 +69,11 @@ class GeneralizedAlpha final : public TimeStepper {
     Eigen::VectorXd x = vdot_;
     StepTry r;
     r.converged = newton_solve(model, start, h, map, res, max_iterations_, newton_tol_, x, state, f,
-                               stats, &reuse_);
+                               stats, &reuse_, &weights_);
     if (!r.converged) return r;
     // Zienkiewicz & Xie (1991): local position error (beta - 1/6) h^2 (vdot_{n+1} - vdot_n).
-    r.error = std::abs(p_.beta - 1.0 / 6.0) * h * h * (x - vdot_).lpNorm<Eigen::Infinity>() / tol_;
+    r.error = std::abs(p_.beta - 1.0 / 6.0) * h * h *
+              weights_.cwiseProduct(x - vdot_).lpNorm<Eigen::Infinity>() / tol_;
     next_vdot_ = x;
     next_a_ = a_known + c * x;
     next_h_ = h;
@@ -97,8 +100,10 @@ class GeneralizedAlpha final : public TimeStepper {
   AlphaParameters p_;
   int max_iterations_;
   double tol_;
-  double newton_tol_;  // m and rad
-  NewtonReuse reuse_;  // the iteration matrix kept between steps
+  double newton_tol_;        // m and rad (or m: error_at_points)
+  NewtonReuse reuse_;        // the iteration matrix kept between steps
+  bool at_points_;           // SolverSettings::error_at_points
+  Eigen::VectorXd weights_;  // per DOF, what the error's norm multiplies it by
   Eigen::VectorXd vdot_, a_, next_vdot_, next_a_;
   double h_ = 0, next_h_ = 0;
 };

@@ -9,7 +9,7 @@ namespace finseg {
 
 bool backward_euler_solve(const Model& model, const State& start, double h, int max_iterations,
                           double pose_tol, Eigen::VectorXd& v, State& state, BodyForces& f,
-                          SolverStats& stats, NewtonReuse* reuse) {
+                          SolverStats& stats, NewtonReuse* reuse, const Eigen::VectorXd* weights) {
   AffineStep map;
   map.dq0 = Eigen::VectorXd::Zero(model.num_dofs);
   map.v0 = Eigen::VectorXd::Zero(model.num_dofs);
@@ -19,7 +19,7 @@ bool backward_euler_solve(const Model& model, const State& start, double h, int 
   res.b = momentum(model, start);
   res.s = h;
   return newton_solve(model, start, h, map, res, max_iterations, pose_tol, v, state, f, stats,
-                      reuse);
+                      reuse, weights);
 }
 
 namespace {
@@ -27,12 +27,18 @@ namespace {
 class BackwardEuler final : public TimeStepper {
  public:
   BackwardEuler(const SolverSettings& s, double tol)
-      : max_iterations_(newton_iterations(s)), tol_(tol), newton_tol_(s.newton_tolerance * tol) {
+      : max_iterations_(newton_iterations(s)),
+        tol_(tol),
+        newton_tol_(s.newton_tolerance * tol),
+        at_points_(s.error_at_points) {
     reuse_.max_age = s.jacobian_reuse ? s.jacobian_max_age : 1;
     reuse_.krylov = s.krylov_steps;
   }
 
-  void begin(const Model&, const State&, const BodyForces&) override { last_ = {}; }
+  void begin(const Model& model, const State&, const BodyForces&) override {
+    last_ = {};
+    weights_ = at_points_ ? displacement_weights(model) : Eigen::VectorXd::Ones(model.num_dofs);
+  }
 
   StepTry attempt(const Model& model, const State& start, double h, State& state, BodyForces& f,
                   SolverStats& stats) override {
@@ -41,8 +47,10 @@ class BackwardEuler final : public TimeStepper {
     tried_ = {v0, h};
     StepTry r;
     r.converged = backward_euler_solve(model, start, h, max_iterations_, newton_tol_, v, state, f,
-                                       stats, &reuse_);
-    if (r.converged) r.error = 0.5 * h * (v - v0).lpNorm<Eigen::Infinity>() / tol_;
+                                       stats, &reuse_, &weights_);
+    if (r.converged) {
+      r.error = 0.5 * h * weights_.cwiseProduct(v - v0).lpNorm<Eigen::Infinity>() / tol_;
+    }
     return r;
   }
 
@@ -63,8 +71,10 @@ class BackwardEuler final : public TimeStepper {
  private:
   int max_iterations_;
   double tol_;
-  double newton_tol_;  // m and rad
-  NewtonReuse reuse_;  // the iteration matrix kept between steps
+  double newton_tol_;        // m and rad (or m: error_at_points)
+  NewtonReuse reuse_;        // the iteration matrix kept between steps
+  bool at_points_;           // SolverSettings::error_at_points
+  Eigen::VectorXd weights_;  // per DOF, what the error's norm multiplies it by
 
   // A step's start velocity and length (h = 0: none).
   struct LastStep {

@@ -243,8 +243,9 @@ bool may_precondition(const NewtonReuse& k, const VolumeStiffness& gas, double s
 // as the Cholesky factor of its symmetric part, 3x cheaper than its LU there; its steps are
 // tested as a kept matrix's, and where one stops contracting the solve goes on with LU.
 bool modified_newton(const Model& model, const State& state, const AffineStep& map,
-                     const NewtonResidual& res, int max_iterations, double pose_tol, bool symmetric,
-                     Linearisation& lin, Eigen::VectorXd& x, SolverStats& stats, NewtonReuse& k) {
+                     const NewtonResidual& res, int max_iterations, double pose_tol,
+                     const Eigen::VectorXd& weights, bool symmetric, Linearisation& lin,
+                     Eigen::VectorXd& x, SolverStats& stats, NewtonReuse& k) {
   const double s_cq = res.s * map.cq, s_cv = res.s * map.cv;
   bool renew = k.stale || !k.matrix.valid() || k.symmetric != symmetric || k.age >= k.max_age ||
                !near(s_cq, k.s_cq) || !near(s_cv, k.s_cv);
@@ -280,7 +281,7 @@ bool modified_newton(const Model& model, const State& state, const AffineStep& m
       continue;
     }
     ++k.age;
-    const double step = map.cq * dx.lpNorm<Eigen::Infinity>();
+    const double step = map.cq * weights.cwiseProduct(dx).lpNorm<Eigen::Infinity>();
     // Contraction rate theta = |dx_k| / |dx_k-1| on one matrix.
     if (!fresh && dx_prev > 0) k.eta = error_factor(step / dx_prev);
     // Fresh and exact, Newton's test; else also the error left after the step.
@@ -334,15 +335,17 @@ void newton_linearisation(const Model& model, const State& start, double h, cons
 bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
                   const NewtonResidual& res, int max_iterations, double pose_tol,
                   Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats,
-                  NewtonReuse* reuse) {
+                  NewtonReuse* reuse, const Eigen::VectorXd* weights) {
   // A conservative, undamped model's iteration matrix is symmetric but for the skew part of
   // its rotation Jacobian ((1/2)[tau]x per body, elements/assemble.hpp) and of the gyroscopic
   // term, both small per step like the derivatives of M(q) left out already: its symmetric
   // part goes to the sparse Cholesky instead of LU (docs/solvers.md, "Linear solves").
   const bool symmetric = conservative_stiffness(model) && !has_velocity_forces(model);
   Linearisation lin(model, start, h, map, res, state, f, stats);
+  const Eigen::VectorXd W =
+      weights != nullptr ? *weights : Eigen::VectorXd(Eigen::VectorXd::Ones(model.num_dofs));
   if (reuse != nullptr && reuse->max_age > 1) {
-    return modified_newton(model, state, map, res, max_iterations, pose_tol, symmetric, lin, x,
+    return modified_newton(model, state, map, res, max_iterations, pose_tol, W, symmetric, lin, x,
                            stats, *reuse);
   }
   lin.at(x, true);
@@ -357,7 +360,7 @@ bool newton_solve(const Model& model, const State& start, double h, const Affine
                   : solve_with_volume_stiffness(lin.A, res.s * map.cq,
                                                 volume_stiffness(model, state), -lin.r, dx);
     if (!solved) return false;
-    const double step = map.cq * dx.lpNorm<Eigen::Infinity>();
+    const double step = map.cq * W.cwiseProduct(dx).lpNorm<Eigen::Infinity>();
     // A secant's steps contract linearly: the error left is bounded by eta |dx| as above.
     const bool bounded =
         lin.exact() || (step_prev > 0 && error_factor(step / step_prev) * step < pose_tol);

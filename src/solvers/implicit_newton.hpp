@@ -60,15 +60,15 @@ void place_state(const Model& model, const State& start, double h, const Eigen::
                  const Eigen::VectorXd& v, State& state);
 
 /// Newton iterations on r(x) = 0 from the guess in `x`, stopping when the pose correction
-/// |cq dx|_inf falls below `pose_tol` (m and rad); a correction that does not lower |r| is
-/// halved (up to 5 times). With `reuse` (max_age > 1) the iteration matrix is kept while it
-/// contracts (docs/solvers.md, "Modified Newton"); the residual is always exact. On success leaves
-/// `state` at the solution with its forces in `f` and returns true; false when Newton fails (not
-/// finite, singular, or max_iterations reached).
+/// |cq W dx|_inf falls below `pose_tol` (W: `weights` per DOF, else 1); a correction that does not
+/// lower |r| is halved (up to 5 times). With `reuse` (max_age > 1) the iteration matrix is kept
+/// while it contracts (docs/solvers.md, "Modified Newton"); the residual is always exact. On
+/// success leaves `state` at the solution with its forces in `f` and returns true; false when
+/// Newton fails (not finite, singular, or max_iterations reached).
 bool newton_solve(const Model& model, const State& start, double h, const AffineStep& map,
                   const NewtonResidual& res, int max_iterations, double pose_tol,
                   Eigen::VectorXd& x, State& state, BodyForces& f, SolverStats& stats,
-                  NewtonReuse* reuse = nullptr);
+                  NewtonReuse* reuse = nullptr, const Eigen::VectorXd* weights = nullptr);
 
 /// The residual r(x) of newton_solve and its iteration matrix dr/dx at x, `state` placed there
 /// (what each Newton iteration with a new matrix solves with until a solve takes friction's
@@ -81,7 +81,8 @@ void newton_linearisation(const Model& model, const State& start, double h, cons
 /// M(q1) v1 - p0 = h g(q0 + h v1, v1) for v1 by newton_solve from the guess in `v`.
 bool backward_euler_solve(const Model& model, const State& start, double h, int max_iterations,
                           double pose_tol, Eigen::VectorXd& v, State& state, BodyForces& f,
-                          SolverStats& stats, NewtonReuse* reuse);
+                          SolverStats& stats, NewtonReuse* reuse,
+                          const Eigen::VectorXd* weights = nullptr);
 
 /// Gyroscopic vector (0, w_W x J_W w_W) of the free bodies.
 Eigen::VectorXd gyroscopic_forces(const Model& model, const State& state);

@@ -46,6 +46,11 @@ struct SolverSettings {
   /// implicit: Newton stops when its pose correction (and with a kept matrix the error bound
   /// left after it) is below this fraction of the local error tolerance (docs/solvers.md)
   double newton_tolerance = 1e-3;
+  /// implicit: the local error and Newton's test measured as the largest displacement of a
+  /// segment's points (rotations times its radius, displacement_weights) instead of in m and
+  /// rad, where a small segment's rotation counts as much as a metre (docs/solvers.md, "Step
+  /// control").
+  bool error_at_points = false;
 };
 
 /// Newton iterations per solve: `max_iterations`, else 10 for the implicit solver (a harder

@@ -39,7 +39,8 @@ nlohmann::json solver_json(const SolverSettings& s) {
           {"jacobian_reuse", s.jacobian_reuse},
           {"jacobian_max_age", s.jacobian_max_age},
           {"krylov_steps", s.krylov_steps},
-          {"newton_tolerance", s.newton_tolerance}};
+          {"newton_tolerance", s.newton_tolerance},
+          {"error_measure", error_measure_name(s.error_at_points)}};
 }
 
 nlohmann::json linear_json(const LinearSolveCounters& c) {
